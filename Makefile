@@ -1,0 +1,38 @@
+# Two commands do all the set-up on a fresh Debian machine with Python ≥ 3.11:
+#   make run    set up, then run the assistant on its built-in default (the simulated apartment)
+#   make test   set up, then run the tests
+VENV ?= .venv
+PY := $(VENV)/bin/python
+SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng
+STAMP := $(VENV)/.installed
+
+.PHONY: run test setup system-packages bench clean
+
+run: setup
+	$(VENV)/bin/assistant world apartment --view
+
+test: setup
+	$(PY) -m pytest -q
+
+bench: setup
+	$(PY) benchmarks/run_all.py
+
+setup: $(STAMP)
+
+# System libraries open3d (libusb, libgomp, GL/EGL for its module), speech output (espeak-ng).
+system-packages:
+	@missing=""; for p in $(SYSTEM_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing system packages:$$missing"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing; \
+	fi
+
+$(STAMP): pyproject.toml | system-packages
+	python3 -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q -e '.[dev]'
+	touch $(STAMP)
+
+clean:
+	rm -rf $(VENV) .pytest_cache

@@ -1,0 +1,58 @@
+"""The ``assistant`` console script: one subcommand per module of this package.
+
+Each command module exposes ``register(subparsers)`` and imports only ``argparse`` at module
+level, so that ``assistant parse`` does not pay for open3d. Heavy imports happen inside the
+handler. A handler returns an exit status; an :class:`~assistant.errors.AssistantError` becomes
+one line on stderr and status 2, and the process never shows a traceback for bad input.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from assistant.errors import AssistantError
+
+#: Command modules under ``assistant.cli``, in the order ``--help`` lists them.
+COMMAND_MODULES = (
+    "world",
+    "sim",
+    "parse",
+    "relations",
+    "perceive",
+    "eval",
+)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assistant",
+        description="A home robot you direct with ordinary spatial language.",
+    )
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    subparsers.required = True
+    for name in COMMAND_MODULES:
+        try:
+            module = importlib.import_module(f"assistant.cli.{name}")
+        except ModuleNotFoundError as error:  # a command whose module is not built yet
+            if error.name != f"assistant.cli.{name}":
+                raise
+            continue
+        module.register(subparsers)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.handler(args) or 0)
+    except AssistantError as error:
+        print(f"assistant {args.command}: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # e.g. `assistant world apartment --json | head`
+        return 0

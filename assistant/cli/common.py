@@ -1,0 +1,104 @@
+"""Helpers shared by the command modules: JSON output, batch requests, pose arguments."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from collections.abc import Callable, Iterable
+from typing import Any
+
+from assistant.errors import AssistantError
+
+
+def to_jsonable(value: Any) -> Any:
+    """Convert numpy scalars/arrays, tuples and dataclass-like objects for ``json.dumps``."""
+    if hasattr(value, "to_dict"):
+        return to_jsonable(value.to_dict())
+    if isinstance(value, dict):
+        return {str(k): to_jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple, set, frozenset)):
+        return [to_jsonable(v) for v in value]
+    if hasattr(value, "tolist"):  # numpy array or scalar
+        return to_jsonable(value.tolist())
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def emit_json(obj: Any, stream=None) -> None:
+    """Print exactly one JSON object on one line of stdout."""
+    stream = stream or sys.stdout
+    stream.write(json.dumps(to_jsonable(obj), ensure_ascii=False) + "\n")
+    stream.flush()
+
+
+def run_batch(
+    path: str,
+    handle: Callable[[Any], dict],
+    *,
+    json_requests: bool,
+) -> int:
+    """Answer one request per line of ``path`` with one JSON object per line, in order.
+
+    With ``json_requests`` each line is parsed as a JSON object first. A request that fails
+    gives ``{"error": ..., "line": n}`` on its line and the batch goes on. Blank lines are skipped.
+    """
+    try:
+        handle_file = sys.stdin if path == "-" else open(path, encoding="utf-8-sig")
+    except OSError as error:
+        raise AssistantError(f"cannot read batch file {path}: {error.strerror}") from error
+    with handle_file:
+        for number, raw in enumerate(handle_file, start=1):
+            line = raw.strip()
+            if not line:
+                continue
+            try:
+                request = json.loads(line) if json_requests else line
+                if json_requests and not isinstance(request, dict):
+                    raise AssistantError("expected a JSON object")
+                emit_json(handle(request))
+            except json.JSONDecodeError as error:
+                emit_json({"error": f"line {number}: not JSON: {error.msg}", "line": number})
+            except (AssistantError, ValueError, KeyError, TypeError) as error:
+                emit_json({"error": f"line {number}: {error}", "line": number})
+    return 0
+
+
+def parse_pose(text: str) -> tuple[float, float, float]:
+    """Parse ``X,Y,HEADING`` (metres, metres, radians) for argparse."""
+    parts = [p for p in text.replace(" ", "").split(",") if p]
+    if len(parts) != 3:
+        raise argparse.ArgumentTypeError(
+            f"expected X,Y,HEADING (metres, metres, radians), got {text!r}"
+        )
+    try:
+        x, y, heading = (float(p) for p in parts)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"pose values must be numbers, got {text!r}") from None
+    if not all(math.isfinite(v) for v in (x, y, heading)):
+        raise argparse.ArgumentTypeError(f"pose values must be finite, got {text!r}")
+    return x, y, heading
+
+
+def add_json_flag(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+
+
+def print_table(rows: Iterable[Iterable[Any]], header: Iterable[str], stream=None) -> None:
+    """Print a plain-text table with aligned columns."""
+    stream = stream or sys.stdout
+    header = [str(h) for h in header]
+    body = [[_cell(c) for c in row] for row in rows]
+    widths = [max(len(h), *(len(r[i]) for r in body)) if body else len(h) for i, h in enumerate(header)]
+    stream.write("  ".join(h.ljust(w) for h, w in zip(header, widths)).rstrip() + "\n")
+    stream.write("  ".join("-" * w for w in widths) + "\n")
+    for row in body:
+        stream.write("  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() + "\n")
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, float):
+        return f"{value:.3f}"
+    return str(value)

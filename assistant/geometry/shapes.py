@@ -1,0 +1,51 @@
+"""Footprints of things on the floor as polygons (metres, world frame)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from assistant.geometry.pose import Pose2D
+
+
+def rectangle(pose: Pose2D, length_m: float, width_m: float) -> np.ndarray:
+    """Corners (4, 2) of a rectangle centred on ``pose``, ``length_m`` along its heading."""
+    hl, hw = length_m / 2.0, width_m / 2.0
+    local = np.array([[hl, hw], [-hl, hw], [-hl, -hw], [hl, -hw]])
+    return pose.transform_points(local)
+
+
+def regular_polygon(pose: Pose2D, circumradius_m: float, sides: int) -> np.ndarray:
+    """Corners (sides, 2) of a regular polygon centred on ``pose`` (first vertex on its heading)."""
+    angles = np.arange(sides) * 2.0 * math.pi / sides
+    local = circumradius_m * np.stack([np.cos(angles), np.sin(angles)], axis=1)
+    return pose.transform_points(local)
+
+
+def ellipse(pose: Pose2D, length_m: float, width_m: float, segments: int = 32) -> np.ndarray:
+    """A polygon (segments, 2) approximating the ellipse inscribed in ``length_m × width_m``."""
+    angles = np.arange(segments) * 2.0 * math.pi / segments
+    local = np.stack([length_m / 2 * np.cos(angles), width_m / 2 * np.sin(angles)], axis=1)
+    return pose.transform_points(local)
+
+
+def box_polygon(xmin: float, ymin: float, xmax: float, ymax: float) -> np.ndarray:
+    """Corners (4, 2) of an axis-aligned box, counter-clockwise."""
+    return np.array([[xmin, ymin], [xmax, ymin], [xmax, ymax], [xmin, ymax]], dtype=float)
+
+
+def point_in_polygon(points_xy: np.ndarray, polygon_xy: np.ndarray) -> np.ndarray:
+    """Even-odd test of (N, 2) points against a simple polygon; returns a boolean array."""
+    from matplotlib.path import Path as _Path  # noqa: PLC0415 - only when needed
+
+    return _Path(np.asarray(polygon_xy, dtype=float)).contains_points(
+        np.asarray(points_xy, dtype=float).reshape(-1, 2)
+    )
+
+
+def polygon_area(polygon_xy: np.ndarray) -> float:
+    """Area (m²) of a simple polygon by the shoelace formula."""
+    p = np.asarray(polygon_xy, dtype=float)
+    x, y = p[:, 0], p[:, 1]
+    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))

@@ -1,0 +1,95 @@
+"""The furniture catalogue: model → category, size, shape and front (data in ``data/catalogue.yaml``)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import yaml
+
+from assistant.errors import DataFileError, UnknownNameError
+
+CATEGORIES = ("small table", "large table", "chair", "couch", "bed")
+
+
+@dataclass(frozen=True)
+class FurnitureModel:
+    """One furniture model of the catalogue (sizes in metres, angles in radians)."""
+
+    name: str
+    category: str
+    length_m: float
+    width_m: float
+    height_m: float
+    shape: str
+    front_offset_rad: float | None  # placement yaw → functional front; None: no front
+
+    @property
+    def has_front(self) -> bool:
+        return self.front_offset_rad is not None
+
+    @property
+    def word(self) -> str:
+        """The everyday word for the category ("table" for both table categories)."""
+        return category_word(self.category)
+
+
+@dataclass(frozen=True)
+class ObjectModel:
+    """A small target object (sizes in metres)."""
+
+    name: str
+    length_m: float
+    width_m: float
+    height_m: float
+
+
+@dataclass(frozen=True)
+class Catalogue:
+    models: dict[str, FurnitureModel]
+    objects: dict[str, ObjectModel]
+    category_words: dict[str, str]
+
+    def model(self, name: str) -> FurnitureModel:
+        try:
+            return self.models[name]
+        except KeyError:
+            raise UnknownNameError("furniture model", name, self.models) from None
+
+    def object(self, name: str) -> ObjectModel:
+        try:
+            return self.objects[name]
+        except KeyError:
+            raise UnknownNameError("object", name, self.objects) from None
+
+
+def category_word(category: str) -> str:
+    return load_catalogue().category_words.get(category, category)
+
+
+@lru_cache(maxsize=1)
+def load_catalogue() -> Catalogue:
+    """Load the packaged catalogue once."""
+    path = resources.files("assistant.world") / "data" / "catalogue.yaml"
+    data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    where = "catalogue.yaml"
+    models: dict[str, FurnitureModel] = {}
+    for name, spec in data["models"].items():
+        if spec.get("category") not in CATEGORIES:
+            raise DataFileError(where, f"models.{name}.category", f"expected one of {CATEGORIES}")
+        models[name] = FurnitureModel(
+            name=name,
+            category=spec["category"],
+            length_m=float(spec["length"]),
+            width_m=float(spec["width"]),
+            height_m=float(spec["height"]),
+            shape=str(spec["shape"]),
+            front_offset_rad=(float(spec["front_offset"]) if "front_offset" in spec else None),
+        )
+    objects = {
+        name: ObjectModel(name, float(s["length"]), float(s["width"]), float(s["height"]))
+        for name, s in data["objects"].items()
+    }
+    words = {name: spec["word"] for name, spec in data["categories"].items()}
+    return Catalogue(models=models, objects=objects, category_words=words)

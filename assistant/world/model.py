@@ -1,0 +1,221 @@
+"""The world as the product knows it: floor plan (rooms, walls, doors), furniture, objects.
+
+A :class:`World` is what a world file says: the floor plan, the robot's start pose, and one or
+more :class:`Scene` s (``original``, ``modified``) that place furniture and objects. The robot
+is *told* the floor plan; furniture and objects are ground truth the simulator renders and the
+evaluation scores against, never read by the executor.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from assistant.errors import UnknownNameError
+from assistant.geometry import Pose2D, box_polygon, point_in_polygon, rectangle
+from assistant.world.catalogue import FurnitureModel, load_catalogue
+
+
+@dataclass(frozen=True)
+class Room:
+    """A named area of the floor plan; ``open`` when no wall separates it from a neighbour."""
+
+    name: str
+    polygon: tuple[tuple[float, float], ...]  # metres, world frame, counter-clockwise
+    open: bool = False
+
+    @property
+    def polygon_array(self) -> np.ndarray:
+        return np.asarray(self.polygon, dtype=float)
+
+    @property
+    def centre(self) -> np.ndarray:
+        return self.polygon_array.mean(axis=0)
+
+    def contains(self, x: float, y: float) -> bool:
+        return bool(point_in_polygon(np.array([[x, y]]), self.polygon_array)[0])
+
+
+@dataclass(frozen=True)
+class Wall:
+    """An axis-aligned wall block (metres); walls are 2 m high."""
+
+    xmin: float
+    ymin: float
+    xmax: float
+    ymax: float
+
+    HEIGHT_M = 2.0
+
+    @property
+    def polygon_array(self) -> np.ndarray:
+        return box_polygon(self.xmin, self.ymin, self.xmax, self.ymax)
+
+    def as_list(self) -> list[float]:
+        return [self.xmin, self.ymin, self.xmax, self.ymax]
+
+
+@dataclass(frozen=True)
+class Door:
+    """A doorway: its centre (metres), clear width (metres) and the two areas it connects."""
+
+    name: str
+    centre: tuple[float, float]
+    width_m: float
+    connects: tuple[str, str]
+
+
+@dataclass(frozen=True)
+class Floorplan:
+    rooms: tuple[Room, ...]
+    walls: tuple[Wall, ...]
+    doors: tuple[Door, ...]
+
+    @property
+    def room_names(self) -> list[str]:
+        return [room.name for room in self.rooms]
+
+    def room(self, name: str) -> Room:
+        for room in self.rooms:
+            if room.name == name:
+                return room
+        raise UnknownNameError("room", name, self.room_names)
+
+    def room_at(self, x: float, y: float) -> Room | None:
+        """The room containing a point, or None outside every room."""
+        for room in self.rooms:
+            if room.contains(x, y):
+                return room
+        return None
+
+    def doors_of(self, room_name: str) -> list[Door]:
+        return [d for d in self.doors if room_name in d.connects]
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        """``(xmin, ymin, xmax, ymax)`` of rooms and walls, metres."""
+        pts = [r.polygon_array for r in self.rooms] + [w.polygon_array for w in self.walls]
+        allpts = np.vstack(pts)
+        return (*allpts.min(axis=0), *allpts.max(axis=0))
+
+
+@dataclass(frozen=True)
+class FurnitureItem:
+    """A piece of furniture placed in a scene.
+
+    ``yaw_rad`` is the model's placement angle; ``facing_rad`` its functional front (None for
+    tables). ``length`` of the model runs along ``yaw_rad``.
+    """
+
+    id: str
+    model: str
+    x: float
+    y: float
+    yaw_rad: float
+    facing_rad: float | None
+    room: str
+
+    @property
+    def spec(self) -> FurnitureModel:
+        return load_catalogue().model(self.model)
+
+    @property
+    def category(self) -> str:
+        return self.spec.category
+
+    @property
+    def word(self) -> str:
+        return self.spec.word
+
+    @property
+    def pose(self) -> Pose2D:
+        return Pose2D(self.x, self.y, self.yaw_rad)
+
+    @property
+    def height_m(self) -> float:
+        return self.spec.height_m
+
+    def footprint_polygon(self) -> np.ndarray:
+        """Corners (4, 2) of the model's bounding rectangle on the floor (metres)."""
+        spec = self.spec
+        return rectangle(self.pose, spec.length_m, spec.width_m)
+
+
+@dataclass(frozen=True)
+class PlacedObject:
+    """A target object lying on a piece of furniture at ``(x, y)`` metres."""
+
+    name: str
+    on: str  # furniture id
+    x: float
+    y: float
+
+
+@dataclass(frozen=True)
+class Scene:
+    name: str
+    furniture: tuple[FurnitureItem, ...]
+    objects: tuple[PlacedObject, ...] = ()
+
+    def item(self, furniture_id: str) -> FurnitureItem:
+        for item in self.furniture:
+            if item.id == furniture_id:
+                return item
+        raise UnknownNameError("furniture", furniture_id, [f.id for f in self.furniture])
+
+    def object(self, name: str) -> PlacedObject:
+        for obj in self.objects:
+            if obj.name == name:
+                return obj
+        raise UnknownNameError("object", name, [o.name for o in self.objects])
+
+    def object_height_m(self, obj: PlacedObject) -> float:
+        """Height (metres) of the surface the object lies on."""
+        return self.item(obj.on).height_m
+
+
+@dataclass(frozen=True)
+class World:
+    name: str
+    floorplan: Floorplan
+    start: Pose2D
+    start_heading_rad: float  # as written in the file (``start.theta`` is wrapped)
+    scenes: dict[str, Scene]
+    title: str = ""
+    source: str | None = field(default=None, compare=False)
+
+    def scene(self, name: str = "original") -> Scene:
+        try:
+            return self.scenes[name]
+        except KeyError:
+            raise UnknownNameError("scene", name, self.scenes) from None
+
+    def to_dict(self, scene: str = "original") -> dict:
+        """The ``assistant world NAME --json`` object (see DESIGN.md's command-line contract)."""
+        sc = self.scene(scene)
+        return {
+            "world": self.name,
+            "scene": sc.name,
+            "start": {"x": self.start.x, "y": self.start.y, "heading": self.start_heading_rad},
+            "rooms": [
+                {"name": r.name, "polygon": [list(p) for p in r.polygon], "open": r.open}
+                for r in self.floorplan.rooms
+            ],
+            "doors": [
+                {"name": d.name, "x": d.centre[0], "y": d.centre[1], "width": d.width_m,
+                 "connects": list(d.connects)}
+                for d in self.floorplan.doors
+            ],
+            "walls": [w.as_list() for w in self.floorplan.walls],
+            "furniture": [
+                {"id": f.id, "model": f.model, "category": f.category, "x": f.x, "y": f.y,
+                 "yaw": f.yaw_rad, "facing": f.facing_rad, "room": f.room,
+                 "length": f.spec.length_m, "width": f.spec.width_m, "height": f.spec.height_m}
+                for f in sc.furniture
+            ],
+            "objects": [
+                {"name": o.name, "on": o.on, "x": o.x, "y": o.y,
+                 "z": sc.object_height_m(o), "room": sc.item(o.on).room}
+                for o in sc.objects
+            ],
+        }

@@ -1,0 +1,39 @@
+"""Shared fixtures: loaded worlds (loaded once per session) and a private model cache."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+SHARED = Path(__file__).resolve().parents[1].parent / "shared"
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _private_cache(tmp_path_factory):
+    """Tests train into their own cache so they never read a developer's stale models."""
+    if "ASSISTANT_CACHE" not in os.environ:
+        os.environ["ASSISTANT_CACHE"] = str(tmp_path_factory.mktemp("cache"))
+    yield
+
+
+@pytest.fixture(scope="session")
+def apartment():
+    from assistant.world import load_world
+
+    return load_world("apartment")
+
+
+@pytest.fixture(scope="session")
+def all_worlds():
+    from assistant.world import load_world, world_names
+
+    return {name: load_world(name) for name in world_names()}
+
+
+@pytest.fixture(scope="session")
+def shared_dir() -> Path:
+    if not SHARED.exists():
+        pytest.skip("../shared is not beside this checkout")
+    return SHARED
