@@ -50,7 +50,7 @@ def run(args: argparse.Namespace) -> int:
 def _show(world, scene: str, args: argparse.Namespace) -> int:
     from assistant.viz import SceneView
 
-    with SceneView() as view:
+    with SceneView(open_server=bool(args.view)) as view:
         view.draw_world(world, scene)
         if args.html:
             path = view.save_html(args.html)
