@@ -21,6 +21,8 @@ COMMAND_MODULES = (
     "parse",
     "relations",
     "perceive",
+    "where",
+    "teach",
     "eval",
 )
 
