@@ -1,0 +1,37 @@
+"""The executor: doing what the plan says — room entry, path planning, motion control.
+
+Outcomes are values (:class:`ExecutionResult` with an :class:`ExecutionStatus`), never
+exceptions for things that happen in a home. Planning reads the floor plan the robot is told
+and the furniture perception reports; motion drives any robot through its shared interface.
+"""
+
+from assistant.executor.localization import FloorplanLocalizer, LocalizationUpdate, wall_faces
+from assistant.executor.motion import (
+    DrivableRobot,
+    Localizer,
+    MotionLimits,
+    PathFollower,
+    face_point,
+    follow_path,
+    turn_to,
+)
+from assistant.executor.navigation import Navigator
+from assistant.executor.obstacles import DepthObstacles
+from assistant.executor.outcome import ExecutionResult, ExecutionStatus
+from assistant.executor.planning import (
+    NoPathError,
+    OccupancyMap,
+    PlannedPath,
+    build_occupancy,
+    entity_mask_on,
+    plan_path,
+)
+from assistant.executor.rooms import DoorCrossing, RoomGraph, door_crossing, room_entry_waypoints, room_of
+
+__all__ = [
+    "DepthObstacles", "DoorCrossing", "DrivableRobot", "ExecutionResult", "ExecutionStatus", "FloorplanLocalizer",
+    "LocalizationUpdate", "Localizer", "MotionLimits", "Navigator", "NoPathError",
+    "OccupancyMap", "PathFollower", "PlannedPath", "RoomGraph", "build_occupancy", "door_crossing",
+    "entity_mask_on", "face_point", "follow_path", "plan_path", "room_entry_waypoints", "room_of",
+    "turn_to", "wall_faces",
+]
