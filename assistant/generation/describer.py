@@ -1,0 +1,161 @@
+"""The describer: a sighting and an environment model in, a human-like description out.
+
+:class:`Describer` runs content selection (:mod:`assistant.generation.content`) and surface
+realization (:mod:`assistant.generation.realize`) with a :class:`GenerationModel` learned from
+the corpus. The search that produces the :class:`ObjectSighting` is separate: today the
+command line uses the *oracle search* (:func:`oracle_sighting`, the world file's position)
+and the *oracle environment* (:func:`oracle_environment`, the world file's furniture); the
+robot's search with perception will produce the same types.
+"""
+
+from __future__ import annotations
+
+import time
+
+from assistant.errors import AssistantError, UnknownNameError
+from assistant.generation.types import STYLES, GeneratedDescription, ObjectSighting
+
+__all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "known_objects", "not_found_description",
+           "oracle_environment", "oracle_sighting", "style_for_question"]
+
+#: questions that ask for the way, not the place ("how do I get to my mug?")
+DYNAMIC_QUESTION_WORDS = ("how do i get", "how do i find", "how can i get", "how can i find",
+                          "how do i reach", "take me to", "way to")
+
+
+def style_for_question(question: str) -> str:
+    """``dynamic`` for "how do I get to my X?", else ``static`` ("where is my X?")."""
+    q = " ".join(question.lower().split())
+    return "dynamic" if any(w in q for w in DYNAMIC_QUESTION_WORDS) else "static"
+
+
+class Describer:
+    """Describes where a sighted object is. ``model``: a fitted
+    :class:`~assistant.generation.model.GenerationModel` (default: trained from the repository
+    corpus, cached)."""
+
+    def __init__(self, model=None, alpha: float | None = None):
+        if model is None:
+            from assistant.generation.model import load_generation_model
+            model = load_generation_model()
+        self.model = model
+        from assistant.generation.content import ALPHA
+        self.alpha = ALPHA if alpha is None else alpha
+        self._warm_up()
+
+    @staticmethod
+    def _warm_up() -> None:
+        """Load the spatial layer and fill its caches now, not when the object is found."""
+        import assistant.generation.realize  # noqa: F401
+        import assistant.generation.route  # noqa: F401
+        from assistant.geometry import GridMap, box_polygon
+        from assistant.spatial import dir_srv, dist_srv
+        from assistant.world import Entity, EntityKind
+
+        grid = GridMap(0.05, 0.0, 0.0, 40, 40)
+        a = Entity.from_polygon("a", "couch", EntityKind.SHORT_TERM, box_polygon(0.2, 0.2, 0.8, 0.6), grid, 0.0)
+        b = Entity.from_polygon("b", "table", EntityKind.SHORT_TERM, box_polygon(1.2, 1.2, 1.6, 1.6), grid)
+        dir_srv(a, b)
+        dist_srv(a, b)
+
+    def describe(self, sighting: ObjectSighting, environment_entities: list, floorplan,
+                 listener_pose=None, style: str = "static") -> GeneratedDescription:
+        """Describe ``sighting`` using the furniture in ``environment_entities`` (entities with
+        ``name``, ``room`` and cells on one grid) and the floor plan. ``listener_pose``
+        (:class:`~assistant.geometry.Pose2D`) filters the room out when the listener is in it
+        and is where a ``dynamic`` description starts from."""
+        from assistant.generation.content import candidate_nodes, select_content, support_of
+        from assistant.generation.realize import chunk_options, realize
+        from assistant.generation.route import route_nodes
+
+        if style not in STYLES:
+            raise UnknownNameError("description style", style, STYLES)
+        if style == "dynamic" and listener_pose is None:
+            raise AssistantError("a how-to-find (dynamic) description needs the listener's pose: "
+                                 "give --listener X,Y,HEADING")
+        start = time.perf_counter()
+        furniture = [e for e in environment_entities if getattr(e, "kind", None) is None or
+                     str(getattr(e.kind, "value", e.kind)) == "short_term"]
+        support = support_of(sighting, furniture)
+        if support is None:
+            raise AssistantError(f"no furniture under the {sighting.name} at ({sighting.x:.2f}, "
+                                 f"{sighting.y:.2f}) in the environment model; the generator "
+                                 "describes objects lying on furniture")
+        room = support.room or sighting.room
+        route = route_nodes(floorplan, listener_pose, support, room) if style == "dynamic" else []
+        says_room = any(n.key == "enter" for n in route)
+        candidates = candidate_nodes(sighting, support, furniture, floorplan, listener_pose,
+                                     include_room=not says_room)
+        candidates = [c for c in candidates if c.forced or chunk_options(self.model, c.node, style)]
+        listener_inside = (listener_pose is not None and
+                           floorplan.room(room).contains(listener_pose.x, listener_pose.y))
+        distractors = [e for e in furniture if e is not support and e.name == support.name
+                       and (not (listener_inside or says_room) or e.room == room)]
+        selected, value, ambiguous = select_content(candidates, self.model, distractors, self.alpha)
+        nodes = route + selected
+        text, top, said = realize(self.model, nodes, sighting.name, style)
+        tree = top[0] if len(top) == 1 else _wrap(top)
+        elapsed = time.perf_counter() - start
+        return GeneratedDescription(
+            found=True, description=text, object=sighting.name, style=style, sighting=sighting,
+            selected=said, candidates=[c.node for c in candidates], tree=tree, objective=value,
+            ambiguous=ambiguous, composition_seconds=elapsed)
+
+
+def _wrap(top):
+    from assistant.generation.types import ChunkNode
+    return ChunkNode("S", [], None, 1.0, [], list(top))
+
+
+# ------------------------------------------------------------------------------ oracle search
+def known_objects(world=None) -> list[str]:
+    """Object names the robot knows how to look for: every object of the packaged worlds (and
+    of ``world``)."""
+    from assistant.world import load_world, world_names
+
+    names = set()
+    for name in world_names():
+        w = load_world(name)
+        for scene in w.scenes.values():
+            names.update(o.name for o in scene.objects)
+    if world is not None:
+        for scene in world.scenes.values():
+            names.update(o.name for o in scene.objects)
+    return sorted(names)
+
+
+def oracle_sighting(world, scene: str, name: str) -> ObjectSighting | None:
+    """The object's position from the world file (the oracle search), or None when the scene
+    has no such object. Raises :class:`UnknownNameError` for a name the robot cannot look for."""
+    key = " ".join(name.lower().split())
+    sc = world.scene(scene)
+    for obj in sc.objects:
+        if obj.name.lower() == key:
+            room = world.floorplan.room_at(obj.x, obj.y)
+            return ObjectSighting(obj.name, obj.x, obj.y, sc.object_height_m(obj),
+                                  room.name if room else sc.item(obj.on).room, world.start, 0.0)
+    known = known_objects(world)
+    if key not in known:
+        raise UnknownNameError("object", name, known)
+    return None
+
+
+def oracle_environment(world, scene: str, resolution_m: float = 0.05) -> list:
+    """The ground-truth furniture of the scene as entities (oracle environment model)."""
+    from assistant.world import furniture_entities, world_grid
+
+    return furniture_entities(world, scene, world_grid(world, resolution_m))
+
+
+def not_found_description(name: str, rooms: list[str]) -> GeneratedDescription:
+    """The honest answer when the search found nothing."""
+    rooms = [r for r in rooms]
+    if not rooms:
+        where = "anywhere I could reach"
+    elif len(rooms) == 1:
+        where = f"in the {rooms[0]}"
+    else:
+        where = "in the " + ", the ".join(rooms[:-1]) + f" and the {rooms[-1]}"
+    article = "an" if name[:1].lower() in "aeiou" else "a"
+    text = f"I looked {where} and did not find {article} {name}."
+    return GeneratedDescription(found=False, description=text, object=name, searched_rooms=rooms)

@@ -1,0 +1,82 @@
+"""How-to-find steps from the listener's pose (beyond the dissertation, issue item 4).
+
+A dynamic description tells the listener how to get there: "go into the living room, turn
+right, the glasses case is on the table in front of the couch". The steps are content nodes
+like the static ones: ``room-enter-non`` (key ``enter``) when the listener is elsewhere, then
+``move-<left|right|front>-non`` — the side the support is on as the listener enters the room
+(or from where they stand, when already inside).
+"""
+
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+
+from assistant.generation.types import ContentNode
+
+__all__ = ["STRAIGHT_RAD", "room_graph", "room_path", "route_nodes"]
+
+#: a support within this angle of the walking direction is "straight ahead" (radians)
+STRAIGHT_RAD = math.radians(30)
+
+
+def room_graph(floorplan) -> nx.Graph:
+    """Rooms connected by doors."""
+    g = nx.Graph()
+    g.add_nodes_from(floorplan.room_names)
+    for door in floorplan.doors:
+        a, b = door.connects
+        if a in g and b in g:
+            g.add_edge(a, b, door=door.name)
+    return g
+
+
+def room_path(floorplan, pose, room: str) -> list[str] | None:
+    """Rooms from the one holding ``pose`` to ``room`` (both included), or None."""
+    here = floorplan.room_at(pose.x, pose.y)
+    if here is None:
+        return None
+    try:
+        return nx.shortest_path(room_graph(floorplan), here.name, room)
+    except nx.NetworkXNoPath:
+        return None
+
+
+def route_nodes(floorplan, listener_pose, support, room: str) -> list[ContentNode]:
+    """The how-to-find steps to ``support`` (an entity) in ``room`` from ``listener_pose``."""
+    from assistant.generation.content import entry_heading
+
+    r = floorplan.room(room)
+    inside = r.contains(listener_pose.x, listener_pose.y)
+    nodes: list[ContentNode] = []
+    if inside:
+        origin = np.array([listener_pose.x, listener_pose.y])
+        heading = float(listener_pose.theta)
+    else:
+        nodes.append(ContentNode("route", "enter", "room-enter-non", 1.0, {"room": room}))
+        heading = entry_heading(floorplan, room, listener_pose)
+        path = room_path(floorplan, listener_pose, room) or [room]
+        prev = path[-2] if len(path) >= 2 else None
+        doors = [d for d in floorplan.doors_of(room) if prev is None or prev in d.connects] or \
+            floorplan.doors_of(room)
+        if heading is None or not doors:
+            return nodes
+        origin = np.array(doors[0].centre)
+    delta = support.centroid_m - origin
+    bearing = math.atan2(delta[1], delta[0]) - heading
+    bearing = math.atan2(math.sin(bearing), math.cos(bearing))
+    if abs(bearing) <= STRAIGHT_RAD:
+        direction = "front"
+    elif abs(bearing) >= math.pi - STRAIGHT_RAD and inside:
+        direction = "back"
+    else:
+        direction = "left" if bearing > 0 else "right"
+    if direction != "back":
+        p = math.cos(bearing) ** 2 if direction == "front" else math.sin(bearing) ** 2
+        nodes.append(ContentNode("route", f"move-{direction}", f"move-{direction}-non", float(p),
+                                 {"direction": direction}))
+    else:
+        nodes.append(ContentNode("route", "move-back", "move-back-non", 1.0, {"direction": "back"}))
+    return nodes

@@ -1,0 +1,48 @@
+"""``assistant where``: the command module (registered by the lead in COMMAND_MODULES)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import pytest
+
+from assistant.cli import where
+from assistant.errors import AssistantError
+
+
+def _run(argv, capsys):
+    parser = argparse.ArgumentParser(prog="assistant")
+    where.register(parser.add_subparsers())
+    args = parser.parse_args(["where", *argv])
+    code = args.handler(args)
+    return code, capsys.readouterr().out
+
+
+def test_json_answer_has_the_contract_fields(capsys, generation_model):
+    code, out = _run(["mug", "--world", "apartment", "--json"], capsys)
+    data = json.loads(out)
+    assert code == 0
+    for field in ("found", "description", "nodes", "seen_at", "selected", "tree",
+                  "composition_seconds", "search_seconds"):
+        assert field in data
+    assert data["search"] == "oracle" and data["environment"] == "oracle"
+    assert data["found"] and data["description"].startswith("The mug is")
+
+
+def test_batch_goes_on_after_a_bad_line(tmp_path, capsys, generation_model):
+    batch = tmp_path / "req.jsonl"
+    batch.write_text('{"object": "fork", "world": "hk-studio", "scene": "modified"}\n'
+                     '{"object": "stapler", "world": "apartment"}\n'
+                     '{"object": "mug", "world": "apartment", "question": "how do I get to my mug"}\n')
+    code, out = _run(["--batch", str(batch)], capsys)
+    lines = [json.loads(x) for x in out.splitlines()]
+    assert code == 0 and len(lines) == 3
+    assert lines[0]["found"] and "fork" in lines[0]["description"]
+    assert "error" in lines[1] and "glasses case" in lines[1]["error"]
+    assert lines[2]["style"] == "dynamic" and lines[2]["description"].startswith("Go into the bedroom")
+
+
+def test_missing_arguments_are_explained(capsys):
+    with pytest.raises(AssistantError):
+        _run(["mug"], capsys)
