@@ -1,0 +1,93 @@
+"""Text to plan: the language layer's chunk tree, grounded chunk by chunk, assembled.
+
+:class:`CommandParser` holds a trained :class:`~assistant.language.LanguageModel` and a fitted
+grounder; :meth:`CommandParser.parse` never raises on odd input — empty text, nonsense, only
+fillers or unknown words give a plan whose ``unused`` and ``flags`` say what went wrong.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from assistant.errors import AssistantError
+from assistant.grounding.labels import records_from_tree
+from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
+from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
+
+
+#: longest command accepted, in words (a spoken fetch command has a few dozen)
+MAX_WORDS = 200
+
+
+@dataclass
+class ParseResult:
+    """One parsed command: the language analysis, each chunk's grounding, and the plan."""
+
+    analysis: object
+    records: list[ChunkRecord]
+    groundings: list[ChunkGrounding]
+    plan: GroundingPlan
+
+    def to_dict(self) -> dict:
+        """The ``assistant parse --json`` fields (see DESIGN.md, command-line contract)."""
+        a = self.analysis
+        return {
+            "text": a.text,
+            "tokens": list(a.tokens),
+            "pos": list(a.pos),
+            "chunk_labels": list(a.chunk_labels),
+            "tree": a.tree.to_dict(),
+            "bracketed": a.tree.bracketed(),
+            "plan": self.plan.to_dict(),
+            "unused": list(self.plan.unused),
+            "flags": list(self.plan.flags),
+            "chunks": [{"label": r.label, "words": list(r.words), **g.to_dict()}
+                       for r, g in zip(self.records, self.groundings)],
+        }
+
+
+class CommandParser:
+    """Language model + grounder (+ optionally a world, to count same-word furniture)."""
+
+    def __init__(self, language, grounder, world=None):
+        self.language = language
+        self.grounder = grounder
+        self.world = world
+
+    @classmethod
+    def load(cls, grounder: str | None = None, corpus_paths=None, world=None) -> "CommandParser":
+        """Train (or load from the cache) both layers from the corpus."""
+        from assistant.grounding.training import DEFAULT_GROUNDER, split_corpus_paths, train_grounder
+        try:
+            from assistant.language import LanguageModel
+        except ImportError:  # the package does not re-export it (yet)
+            from assistant.language.pipeline import LanguageModel
+
+        _, xmls = split_corpus_paths(corpus_paths)
+        # descriptions given with --corpus train the tagger and chunker too; labels alone do not
+        language = LanguageModel.load(xmls if corpus_paths is not None and xmls else None)
+        return cls(language, train_grounder(grounder or DEFAULT_GROUNDER, corpus_paths), world)
+
+    def ground_tree(self, tree, corrections: dict[str, str] | None = None
+                    ) -> tuple[list[ChunkRecord], list[ChunkGrounding], GroundingPlan]:
+        """Ground a chunk tree; ``corrections`` (typo → word, from the tagger) apply first."""
+        records = records_from_tree(tree, getattr(self.world, "name", None))
+        if corrections:
+            records = [replace(r, words=tuple(corrections.get(w, w) for w in r.words)) for r in records]
+        groundings = self.grounder.ground(records) if records else []
+        plan = assemble_plan(tree, groundings)
+        return records, groundings, plan
+
+    def parse(self, text: str) -> ParseResult:
+        """Parse and ground one command. Odd words never raise (they are listed in ``unused``);
+        only a command longer than :data:`MAX_WORDS` words is refused."""
+        analysis = self.language.analyse(text or "")
+        if len(analysis.tokens) > MAX_WORDS:
+            raise AssistantError(f"the command has {len(analysis.tokens)} words, more than {MAX_WORDS}; "
+                                 "say it as several shorter commands")
+        corrections = dict(getattr(analysis, "corrections", {}) or {})
+        records, groundings, plan = self.ground_tree(analysis.tree, corrections)
+        plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
+                                   analysis.unknown, corrections)
+        finish_flags(plan, words=len(analysis.tokens), world=self.world)
+        return ParseResult(analysis, records, groundings, plan)

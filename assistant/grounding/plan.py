@@ -1,0 +1,184 @@
+"""From grounded chunks to a :class:`GroundingPlan` (dissertation 4.3 II.B–C).
+
+The chunk tree is walked forward, in the order the words were said:
+
+* the first chunk grounded to a room gives the target room, the first grounded to an object
+  the target object;
+* a chunk grounded to a *target* (a FURTP: "on the table") opens one RDT node; the
+  reference-direction pairs of the chunks nested in it ("to the right", "behind the couch")
+  become that node's pairs, tried in order. A ``move`` pair nested in it ("walk straight until
+  you are at the table") is a step of its own, taken before the node;
+* a reference chunk outside any target chunk is a node of its own: ``move``/``room``/``wall``
+  /``door`` references give ``…-non`` nodes (dynamic); a ``robot`` or furniture reference
+  with no target named ("the fork will be on the right") gives a node whose target is implied —
+  a table, where people put small things (4.3 II.B) — and consecutive such pairs share it.
+
+The plan then says what it could not use and what is missing or ambiguous (:data:`FLAG_HELP`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from assistant.grounding.types import ChunkGrounding, GroundingPlan, RDTNode
+from assistant.grounding.vocabulary import (
+    DYNAMIC_REFERENCES,
+    FILLERS,
+    FURNITURE_WORDS,
+    NO_TARGET,
+    canonical_tokens,
+)
+
+#: direction used when a reference chunk names none (e.g. "go forward to" → move front)
+DEFAULT_DIRECTION = {"move": "front", "room": "center", "wall": "front", "door": "front",
+                     "robot": "front"}
+#: what each flag means (the dialogue turns them into questions)
+FLAG_HELP = {
+    "empty": "nothing was said",
+    "not_understood": "no room, place or object could be grounded",
+    "no_object": "no target object was named",
+    "no_room": "no target room was named",
+    "implied_target": "a place was described without naming the furniture; a table is assumed",
+    "unreferenced_target": "a furniture target was named without a reference to find it by",
+    "ambiguous_target": "the room has several items of the named target and no reference picks one",
+    "missing_direction": "a reference was named without a direction; a default was used",
+    "unused_words": "some words could not be used",
+}
+
+
+@dataclass
+class _NodeBuilder:
+    target: str
+    pairs: list[tuple[str, str]] = field(default_factory=list)
+    support: str | None = None
+    implied: bool = False
+    parent_id: int | None = None
+
+    def build(self) -> RDTNode:
+        return RDTNode(self.target, tuple(self.pairs), self.support, self.implied)
+
+
+def said_furniture(words: Sequence[str], pos: Sequence[str]) -> str | None:
+    """The last furniture word among a chunk's own words, canonical (``nightstand``, ``couch``)."""
+    canon, _ = canonical_tokens(words, pos)
+    found = [w for w in canon if w in FURNITURE_WORDS]
+    return found[-1] if found else None
+
+
+def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
+    """Build the plan of a chunk tree whose chunks (in pre-order) have ``groundings``."""
+    chunks = tree.chunks()
+    if len(chunks) != len(groundings):
+        raise ValueError(f"{len(chunks)} chunks but {len(groundings)} groundings")
+    by_id = {id(chunk): g for (chunk, _, _), g in zip(chunks, groundings)}
+    plan = GroundingPlan()
+    flags: list[str] = []
+    for g in groundings:
+        if plan.room is None and g.room:
+            plan.room = g.room
+        if plan.object is None and g.object:
+            plan.object = g.object
+
+    builders: list[_NodeBuilder] = []
+
+    def pair_of(g: ChunkGrounding) -> tuple[str, str]:
+        direction = g.direction
+        if direction is None:
+            direction = DEFAULT_DIRECTION.get(g.reference, "front")
+            flags.append(f"missing_direction:{g.reference}")
+        return g.reference, direction
+
+    def visit(items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
+        for item in items:
+            if not hasattr(item, "label"):
+                continue
+            g = by_id.get(id(item), ChunkGrounding())
+            if g.target:
+                node = _NodeBuilder(g.target, support=said_furniture(
+                    [t.text for t in item.own_tokens], [t.pos for t in item.own_tokens]) or g.target)
+                if g.reference:
+                    node.pairs.append(pair_of(g))
+                visit(item.items, node, id(item))
+                # move steps nested in the target chunk were appended first; the node follows
+                builders.append(node)
+                continue
+            if g.reference:
+                reference, direction = pair_of(g)
+                if reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
+                    builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)]))
+                elif enclosing is not None:
+                    enclosing.pairs.append((reference, direction))
+                else:
+                    last = builders[-1] if builders else None
+                    if last is not None and last.implied and last.parent_id == parent_key:
+                        last.pairs.append((reference, direction))
+                    else:
+                        builders.append(_NodeBuilder("table", [(reference, direction)], None, True, parent_key))
+                visit(item.items, enclosing, id(item))
+                continue
+            visit(item.items, enclosing, id(item))
+
+    visit(tree.items, None, 0)
+    plan.nodes = [b.build() for b in builders]
+    dynamic = [n.dynamic for n in plan.nodes]
+    plan.kind = ("dynamic" if all(dynamic) else "static" if not any(dynamic) else "mixed") if plan.nodes else "static"
+    targets = [n for n in plan.nodes if n.target != NO_TARGET and not n.implied_target]
+    plan.support = targets[-1].support if targets else None
+    for n in plan.nodes:
+        if n.implied_target:
+            flags.append(f"implied_target:{n.target}")
+        elif n.target != NO_TARGET and not n.referenced:
+            flags.append(f"unreferenced_target:{n.target}")
+    plan.flags = list(dict.fromkeys(flags))
+    return plan
+
+
+def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[str] = (),
+                 corrections: dict[str, str] | None = None) -> list[str]:
+    """Words the plan could not use: unknown to the grounder (or the tagger) or outside every
+    chunk, fillers excepted; a typo the tagger corrected counts as its correction. Returned as
+    said, in order."""
+    unknown_set = {u.lower() for u in unknown}
+    corrections = corrections or {}
+    labels = tree.nested_labels()
+    out = []
+    for token, label in zip(tree.tokens(), labels):
+        canon, _ = canonical_tokens([corrections.get(token.text, token.text)], [token.pos])
+        word = canon[0] if canon else ""
+        if not word or word in FILLERS or not any(ch.isalnum() for ch in word):
+            continue
+        if label == "O" or token.text.lower() in unknown_set or (word not in vocabulary
+                                                                    and word not in FURNITURE_WORDS):
+            out.append(token.text)
+    return out
+
+
+def finish_flags(plan: GroundingPlan, *, words: int, world=None) -> GroundingPlan:
+    """Add the flags that need the whole picture: empty, not understood, missing, ambiguous."""
+    flags = list(plan.flags)
+    if words == 0:
+        flags.insert(0, "empty")
+    elif plan.room is None and not plan.nodes and plan.object is None:
+        flags.insert(0, "not_understood")
+    if words and plan.object is None:
+        flags.append("no_object")
+    if words and plan.room is None:
+        flags.append("no_room")
+    if world is not None:
+        for node in plan.nodes:
+            if node.target == NO_TARGET or node.referenced:
+                continue
+            count = count_furniture(world, node.target, plan.room)
+            if count > 1:
+                flags.append(f"ambiguous_target:{node.target}:{count}")
+    if plan.unused:
+        flags.append("unused_words")
+    plan.flags = list(dict.fromkeys(flags))
+    return plan
+
+
+def count_furniture(world, word: str, room: str | None, scene: str = "original") -> int:
+    """How many furniture items of category word ``word`` the room (or the world) holds."""
+    items = world.scene(scene).furniture
+    return sum(1 for item in items if item.word == word and (room is None or item.room == room))

@@ -1,0 +1,71 @@
+"""Text to plan, end to end, with the corpus-trained language model and both grounders."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistant.errors import AssistantError
+from assistant.grounding import CombinedGrounder, CommandParser, LearnedGrounder, ScoredGrounder
+
+
+@pytest.fixture(scope="module")
+def language():
+    try:
+        from assistant.language import LanguageModel
+    except ImportError:
+        from assistant.language.pipeline import LanguageModel
+    return LanguageModel.load()
+
+
+@pytest.fixture(scope="module", params=[ScoredGrounder, LearnedGrounder, CombinedGrounder], ids=lambda c: c.__name__)
+def parser(request, language, corpus_labels):
+    grounder = request.param().fit(corpus_labels.records, corpus_labels.groundings)
+    return CommandParser(language, grounder)
+
+
+@pytest.mark.parametrize("text, room, nodes, obj", [
+    ("go to the bedroom and turn left, the statue is on the table to the left of the bed",
+     "bedroom", ["move-left-non", "bed-left-table"], "statue"),
+    # paraphrases: sofa for couch, nightstand for table, "head to", "make a left"
+    ("head to the living room, the mug is on the table in front of the sofa",
+     "living room", ["couch-front-table"], "mug"),
+    ("go to the bedroom, make a left, the statue is on the nightstand to the left of the bed",
+     "bedroom", ["move-left-non", "bed-left-table"], "statue"),
+])
+def test_commands_and_paraphrases_ground(parser, text, room, nodes, obj):
+    plan = parser.parse(text).plan
+    assert (plan.room, plan.node_strings, plan.object) == (room, nodes, obj)
+
+
+def test_the_plan_keeps_the_word_said_for_the_support(parser):
+    plan = parser.parse("the statue is on the nightstand to the left of the bed").plan
+    assert plan.support == "nightstand" and plan.node_strings == ["bed-left-table"]
+
+
+@pytest.mark.parametrize("text, flag", [
+    ("", "empty"),
+    ("asdf qwerty zxcv", "not_understood"),
+    ("um uh well okay", "not_understood"),
+    ("turn left and go forward", "no_object"),
+])
+def test_bad_input_never_raises_and_is_flagged(parser, text, flag):
+    result = parser.parse(text)
+    assert flag in result.plan.flags
+    data = result.to_dict()
+    assert {"tokens", "pos", "chunk_labels", "tree", "plan", "unused", "flags"} <= set(data)
+
+
+def test_unknown_word_is_listed_in_unused(parser):
+    result = parser.parse("the mug is on the table by the flurbostat")
+    assert "flurbostat" in result.plan.unused and "unused_words" in result.plan.flags
+    assert result.plan.object == "mug"
+
+
+def test_too_long_a_command_is_refused_with_a_reason(parser):
+    with pytest.raises(AssistantError, match="more than 200"):
+        parser.parse("turn left " * 150)
+
+
+def test_a_typo_the_tagger_corrects_is_grounded_as_its_correction(parser):
+    result = parser.parse("go to the bedroom, the mug is on the tabel next to the bed")
+    assert result.plan.node_strings == ["bed-beside-table"] and result.plan.unused == []
