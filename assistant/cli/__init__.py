@@ -21,8 +21,10 @@ COMMAND_MODULES = (
     "parse",
     "relations",
     "perceive",
+    "fetch",
     "where",
     "teach",
+    "chat",
     "eval",
 )
 
