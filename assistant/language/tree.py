@@ -104,30 +104,41 @@ class ChunkTree:
 
     def nested_labels(self) -> list[str]:
         """The nested chunk label of every word, in order (``O`` outside any chunk)."""
-        return [label for label, _ in self._labelled()]
+        return [label for label, _, _ in self._labelled()]
 
     def boundaries(self) -> list[bool]:
         """Per word: whether it is the first word of the innermost chunk that holds it."""
-        return [start for _, start in self._labelled()]
+        return [start for _, start, _ in self._labelled()]
 
-    def _labelled(self) -> list[tuple[str, bool]]:
-        out: list[tuple[str, bool]] = []
+    def start_depths(self) -> list[int]:
+        """Per word: the depth (0 = outermost) of the outermost chunk that opens at this word,
+        or -1 when no chunk opens there. Unlike :meth:`boundaries` this also tells where an
+        outer chunk restarts (``[ORMTP go left] [ORMTP [ORMRP take a right]]``)."""
+        return [depth for _, _, depth in self._labelled()]
+
+    def _labelled(self) -> list[tuple[str, bool, int]]:
+        out: list[tuple[str, bool, int]] = []
+        pending = [-1]  # depth of the outermost chunk opened since the last word
 
         def visit(items, path: tuple[str, ...]):
+            if pending[0] < 0:
+                pending[0] = len(path) - 1
             first = True
             for item in items:
                 if isinstance(item, Chunk):
                     visit(item.items, path + (item.label,))
                     first = False  # a word after a nested chunk continues this one
                 else:
-                    out.append(("-".join(path) if path else OUTSIDE, first and bool(path)))
+                    out.append(("-".join(path) if path else OUTSIDE, first and bool(path), pending[0]))
+                    pending[0] = -1
                     first = False
 
         for item in self.items:
             if isinstance(item, Chunk):
                 visit(item.items, (item.label,))
             else:
-                out.append((OUTSIDE, False))
+                out.append((OUTSIDE, False, -1))
+                pending[0] = -1
         return out
 
     def bracketed(self) -> str:
@@ -147,12 +158,15 @@ class ChunkTree:
     # --- decoding ---------------------------------------------------------------------------
     @classmethod
     def from_labels(cls, words: Sequence[str], pos: Sequence[str], labels: Sequence[str],
-                    boundaries: Sequence[bool] | None = None) -> "ChunkTree":
+                    boundaries: Sequence[bool] | None = None,
+                    start_depths: Sequence[int] | None = None) -> "ChunkTree":
         """Rebuild the tree from nested labels (outermost first), e.g. ``OBTP-FURTP``.
 
         Consecutive words sharing a path prefix share those chunks. A ``True`` boundary starts
-        a new innermost chunk even when the previous word had the same path. Every label
-        sequence decodes to *some* tree, so a tagger's output is always usable.
+        a new innermost chunk even when the previous word had the same path. A start depth
+        ``d >= 0`` (see :meth:`start_depths`) closes every open chunk from depth ``d`` down and
+        opens new ones. Every label sequence decodes to *some* tree, so a tagger's output is
+        always usable.
         """
         if not (len(words) == len(pos) == len(labels)):
             raise ValueError("words, pos and labels must have the same length")
@@ -167,6 +181,8 @@ class ChunkTree:
                 keep += 1
             if start_new and path and keep == len(path):
                 keep = len(path) - 1
+            if start_depths is not None and 0 <= start_depths[i] < len(path):
+                keep = min(keep, int(start_depths[i]))
             del open_chunks[keep:]
             for label_part in path[keep:]:
                 chunk = Chunk(label_part)
