@@ -2,7 +2,8 @@
 
 Each evaluation lives beside the code it measures, in ``assistant/<package>/evaluation.py``,
 and exposes ``add_arguments(parser)`` and ``run(args) -> int``. This module only knows their
-names, so that ``assistant --help`` stays fast.
+names; the chosen evaluation's module is imported when it runs, so neither ``assistant
+--help`` nor one evaluation pays for importing the others.
 """
 
 from __future__ import annotations
@@ -25,25 +26,34 @@ EVALUATIONS = {
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser("eval", help="reproduce the dissertation's experiments")
-    evals = parser.add_subparsers(dest="evaluation", metavar="EVALUATION")
-    evals.required = True
-    for name, module_name in EVALUATIONS.items():
-        sub = evals.add_parser(name, help=f"evaluation of {module_name.split('.')[1]}")
-        sub.add_argument("--json", action="store_true", help="print one JSON object on stdout")
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as error:
-            if not module_name.startswith(error.name or "\0"):
-                raise
-            sub.set_defaults(handler=_not_built(name))
-            continue
-        module.add_arguments(sub)
-        sub.set_defaults(handler=module.run)
+    parser = subparsers.add_parser(
+        "eval", help="reproduce the dissertation's experiments",
+        description="Reproduce the dissertation's experiments on this product. "
+                    "`assistant eval NAME --help` lists the options of one evaluation.",
+    )
+    parser.add_argument("evaluation", choices=sorted(EVALUATIONS), metavar="EVALUATION",
+                        help=", ".join(sorted(EVALUATIONS)))
+    parser.add_argument("options", nargs=argparse.REMAINDER, help="options of that evaluation")
+    parser.set_defaults(handler=run)
 
 
-def _not_built(name: str):
-    def handler(args: argparse.Namespace) -> int:
-        raise AssistantError(f"the {name} evaluation is not built yet (see the open issues)")
+def build_evaluation_parser(name: str) -> tuple[argparse.ArgumentParser, object]:
+    """The parser of one evaluation and its module (imported now)."""
+    module_name = EVALUATIONS[name]
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError as error:
+        if not module_name.startswith(error.name or "\0"):
+            raise
+        raise AssistantError(f"the {name} evaluation is not built yet (see the open issues)") from None
+    parser = argparse.ArgumentParser(prog=f"assistant eval {name}")
+    parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    module.add_arguments(parser)
+    return parser, module
 
-    return handler
+
+def run(args: argparse.Namespace) -> int:
+    parser, module = build_evaluation_parser(args.evaluation)
+    options = parser.parse_args(args.options)
+    options.command = "eval"
+    return module.run(options)
