@@ -81,6 +81,12 @@ class DepthFrame:
         d = np.where(self.valid, self.depth_m, 0.0)
         return np.clip(np.round(d * 1000.0), 0, 65535).astype(np.uint16)
 
+    def camera_to_world(self) -> np.ndarray:
+        """4×4 camera (optical) → world transform; base frame if ``robot_pose`` is None."""
+        if self.robot_pose is None:
+            return camera_to_base_matrix(self.mount)
+        return camera_to_world_matrix(self.mount, self.robot_pose)
+
 
 @dataclass(frozen=True)
 class Odometry:
@@ -90,3 +96,44 @@ class Odometry:
     linear_m_s: float = 0.0
     angular_rad_s: float = 0.0
     timestamp_s: float = 0.0
+
+
+# ---------------------------------------------------------------------------- camera geometry
+#
+# Frames used with a DepthFrame (all metres):
+#   * camera (optical) frame: x right in the image, y down in the image, z along the optical
+#     axis (depth_m is this z);
+#   * base frame: the robot's x forward, y left, z up, origin on the floor under the base centre;
+#   * world frame: the world file's x, y, z up; the base frame is ``robot_pose`` lifted to 3D.
+
+
+def camera_to_base_matrix(mount: CameraMount) -> np.ndarray:
+    """4×4 transform from the camera (optical) frame to the robot's base frame.
+
+    The camera sits ``mount.forward_m`` ahead of the base centre, ``mount.height_m`` above the
+    floor, its optical axis pitched down by ``mount.tilt_rad`` from the base's +x.
+    """
+    c, s = math.cos(mount.tilt_rad), math.sin(mount.tilt_rad)
+    m = np.eye(4)
+    m[:3, 0] = (0.0, -1.0, 0.0)  # image right  → base −y
+    m[:3, 1] = (-s, 0.0, -c)  # image down   → down and a little backwards when tilted down
+    m[:3, 2] = (c, 0.0, -s)  # optical axis → forward, pitched down by the tilt
+    m[:3, 3] = (mount.forward_m, 0.0, mount.height_m)
+    return m
+
+
+def camera_to_world_matrix(mount: CameraMount, robot_pose: Pose2D) -> np.ndarray:
+    """4×4 transform from the camera (optical) frame to the world frame for a base pose."""
+    return robot_pose.matrix4() @ camera_to_base_matrix(mount)
+
+
+def pixel_rays(intrinsics: CameraIntrinsics) -> np.ndarray:
+    """(H, W, 3) float32 ray directions in the camera frame, scaled so that z = 1.
+
+    A point at depth ``d`` seen at pixel (v, u) is ``d * pixel_rays(K)[v, u]`` in the camera
+    frame (so ``depth_m`` times these rays is the organised point cloud).
+    """
+    u = (np.arange(intrinsics.width, dtype=np.float64) - intrinsics.cx) / intrinsics.fx
+    v = (np.arange(intrinsics.height, dtype=np.float64) - intrinsics.cy) / intrinsics.fy
+    uu, vv = np.meshgrid(u, v)
+    return np.stack([uu, vv, np.ones_like(uu)], axis=-1).astype(np.float32)
