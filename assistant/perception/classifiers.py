@@ -1,0 +1,233 @@
+"""Furniture classifiers on the normal feature histogram (dissertation 3.6.3–3.6.4).
+
+Classes are *subclasses*: a category seen from one side ("chair+front", "couch+side", "bed+front",
+"small table"), found by k-means on each category's training features (:func:`view_subclasses`)
+and named by the side the robot saw most in each cluster. Three classifiers, all scikit-learn
+estimators predicting subclass names:
+
+Features: the normal feature histogram M_h, optionally joined by the shape descriptor
+(:class:`FeatureBlocks`).
+
+* ``lsvm``  — linear SVM (``LinearSVC``) on standardised features;
+* ``gsvm``  — Gaussian-kernel SVM (``SVC(kernel="rbf")``);
+* ``autoencoder`` — :class:`AutoencoderClassifier`: a 512-128-32 encoder pre-trained to
+  reconstruct its input (``MLPRegressor``), then fine-tuned with a softmax output
+  (``MLPClassifier`` warm-started from the encoder's weights).
+
+:func:`category_of` maps a subclass back to its category.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from sklearn.base import BaseEstimator, ClassifierMixin, TransformerMixin, clone
+from sklearn.utils.validation import check_is_fitted
+
+#: number of view subclasses per category (Table 3-2)
+SUBCLASS_COUNTS = {"chair": 2, "couch": 3, "bed": 2, "small table": 1, "large table": 1}
+CLASSIFIERS = ("lsvm", "gsvm", "autoencoder")
+
+
+def category_of(subclass: str) -> str:
+    """"couch+side" → "couch"; "small table" → "small table"."""
+    return subclass.split("+", 1)[0]
+
+
+def view_subclasses(X: np.ndarray, category: np.ndarray, alpha: np.ndarray,
+                    seed: int = 0) -> np.ndarray:
+    """Subclass name of each training sample: k-means (``SUBCLASS_COUNTS`` clusters) on each
+    category's features, each cluster named front / back / side by the mean angle ``alpha``
+    between the item's front and the direction to the camera of its members (0 = seen from
+    the front). Categories with one subclass keep their name."""
+    from sklearn.cluster import KMeans
+
+    out = np.array(category, dtype=object)
+    for cat, k in SUBCLASS_COUNTS.items():
+        idx = np.nonzero(np.asarray(category) == cat)[0]
+        if k == 1 or len(idx) < k:
+            continue
+        km = KMeans(n_clusters=k, n_init=10, random_state=seed).fit(X[idx])
+        names = _name_clusters(km.labels_, np.asarray(alpha)[idx], k)
+        out[idx] = [f"{cat}+{names[c]}" for c in km.labels_]
+    return out.astype(str)
+
+
+def _name_clusters(labels: np.ndarray, alpha: np.ndarray, k: int) -> dict[int, str]:
+    """front / back / side for each cluster, each name used once (most typical cluster first)."""
+    stats = {}
+    for c in range(k):
+        a = alpha[labels == c]
+        a = a[np.isfinite(a)]
+        cos = float(np.mean(np.cos(a))) if len(a) else 0.0
+        side = float(np.mean(np.abs(np.sin(a)))) if len(a) else 0.0
+        stats[c] = {"front": cos, "back": -cos, "side": side - abs(cos)}
+    wanted = ["front", "back", "side"][:k]
+    names: dict[int, str] = {}
+    # greedy assignment: the strongest (cluster, name) score first
+    pairs = sorted(((stats[c][n], c, n) for c in range(k) for n in wanted), reverse=True)
+    for _, c, n in pairs:
+        if c not in names and n not in names.values():
+            names[c] = n
+    return names
+
+
+class AutoencoderClassifier(ClassifierMixin, BaseEstimator):
+    """The autoencoder network of 3.6.4, with scikit-learn's MLPs.
+
+    Step 1: an ``encoder`` (default 512-128-32) + mirrored decoder trained to reconstruct the
+    features (unsupervised). Step 2: the encoder's weights initialise an ``MLPClassifier`` of
+    the same hidden layers with a softmax output, trained with cross-entropy. ``activation``
+    "identity" is the dissertation's *purelin*; "relu" is offered because it measures better.
+    """
+
+    def __init__(self, encoder=(512, 128, 32), activation="relu", pretrain_iter=60,
+                 finetune_iter=200, alpha=1e-4, random_state=0):
+        self.encoder = encoder
+        self.activation = activation
+        self.pretrain_iter = pretrain_iter
+        self.finetune_iter = finetune_iter
+        self.alpha = alpha
+        self.random_state = random_state
+
+    def fit(self, X, y):
+        import warnings
+
+        from sklearn.exceptions import ConvergenceWarning
+        from sklearn.neural_network import MLPClassifier, MLPRegressor
+        from sklearn.preprocessing import StandardScaler
+
+        X = np.asarray(X, dtype=float)
+        self.scaler_ = StandardScaler().fit(X)
+        Z = self.scaler_.transform(X)
+        layers = tuple(self.encoder)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            ae = MLPRegressor(hidden_layer_sizes=layers + layers[-2::-1], activation=self.activation,
+                              alpha=self.alpha, max_iter=self.pretrain_iter,
+                              random_state=self.random_state, early_stopping=False)
+            ae.fit(Z, Z)
+            clf = MLPClassifier(hidden_layer_sizes=layers, activation=self.activation,
+                                alpha=self.alpha, max_iter=1, warm_start=True,
+                                random_state=self.random_state)
+            clf.fit(Z, y)  # builds the layers; then the encoder's weights replace them
+            for i in range(len(layers)):
+                clf.coefs_[i] = ae.coefs_[i].copy()
+                clf.intercepts_[i] = ae.intercepts_[i].copy()
+            clf.set_params(max_iter=self.finetune_iter)
+            clf.fit(Z, y)
+        self.autoencoder_loss_ = float(ae.loss_)
+        self.network_ = clf
+        self.classes_ = clf.classes_
+        return self
+
+    def predict_proba(self, X):
+        check_is_fitted(self, "network_")
+        return self.network_.predict_proba(self.scaler_.transform(np.asarray(X, dtype=float)))
+
+    def predict(self, X):
+        proba = self.predict_proba(X)
+        return self.classes_[np.argmax(proba, axis=1)]
+
+
+class FeatureBlocks(TransformerMixin, BaseEstimator):
+    """Standardise the features and pick the blocks a classifier sees.
+
+    The input is ``[M_h | shape descriptor]`` (``mh_length`` + the rest). ``features="mh"`` keeps
+    the dissertation's normal feature histogram alone; ``"mh+shape"`` adds the shape
+    descriptor, its standardised columns multiplied by ``shape_weight`` so 49 columns can
+    count against 800 in a kernel's distance.
+    """
+
+    def __init__(self, features="mh+shape", shape_weight=4.0, mh_length=800):
+        self.features = features
+        self.shape_weight = shape_weight
+        self.mh_length = mh_length
+
+    def _select(self, X):
+        X = np.asarray(X, dtype=float)
+        if self.features == "mh":
+            return X[:, :self.mh_length]
+        if self.features == "mh+shape":
+            return X
+        raise ValueError(f"features must be 'mh' or 'mh+shape', got {self.features!r}")
+
+    def fit(self, X, y=None):
+        Z = self._select(X)
+        self.mean_ = Z.mean(axis=0)
+        self.scale_ = Z.std(axis=0)
+        self.scale_[self.scale_ < 1e-9] = 1.0
+        return self
+
+    def transform(self, X):
+        check_is_fitted(self, "mean_")
+        Z = (self._select(X) - self.mean_) / self.scale_
+        if self.features == "mh+shape":
+            Z[:, self.mh_length:] *= self.shape_weight
+        return Z
+
+
+def make_classifier(name: str, features: str = "mh+shape", random_state: int = 0):
+    """A fresh estimator by name (``lsvm``, ``gsvm``, ``autoencoder``) on ``features``."""
+    from sklearn.pipeline import make_pipeline
+    from sklearn.svm import SVC, LinearSVC
+
+    from assistant.errors import UnknownNameError
+
+    blocks = FeatureBlocks(features)
+    if name == "lsvm":
+        return make_pipeline(blocks, LinearSVC(C=0.05, max_iter=5000, class_weight="balanced",
+                                               random_state=random_state))
+    if name == "gsvm":
+        return make_pipeline(blocks, SVC(kernel="rbf", C=1.0, gamma="scale", class_weight="balanced"))
+    if name == "autoencoder":
+        return make_pipeline(blocks, AutoencoderClassifier(random_state=random_state))
+    raise UnknownNameError("classifier", name, CLASSIFIERS)
+
+
+class FurnitureClassifier(ClassifierMixin, BaseEstimator):
+    """Subclass classifier + confidence: ``predict`` gives subclass names, ``predict_category``
+    categories, ``confidence`` a softmax of the decision values (or the network's probability)."""
+
+    def __init__(self, method="gsvm", features="mh+shape", random_state=0):
+        self.method = method
+        self.features = features
+        self.random_state = random_state
+
+    def fit(self, X, y):
+        self.estimator_ = clone(make_classifier(self.method, self.features, self.random_state)).fit(X, y)
+        self.classes_ = np.asarray(self.estimator_.classes_)
+        return self
+
+    def predict(self, X):
+        check_is_fitted(self, "estimator_")
+        return np.asarray(self.estimator_.predict(X))
+
+    def predict_category(self, X) -> np.ndarray:
+        return np.array([category_of(s) for s in self.predict(X)])
+
+    def scores(self, X) -> np.ndarray:
+        """(n, classes) probabilities (softmax of SVM decision values)."""
+        check_is_fitted(self, "estimator_")
+        if hasattr(self.estimator_, "predict_proba"):
+            return self.estimator_.predict_proba(X)
+        d = np.asarray(self.estimator_.decision_function(X), dtype=float)
+        if d.ndim == 1:
+            d = np.stack([-d, d], axis=1)
+        e = np.exp(2.0 * (d - d.max(axis=1, keepdims=True)))
+        return e / e.sum(axis=1, keepdims=True)
+
+    def predict_with_confidence(self, X) -> tuple[np.ndarray, np.ndarray]:
+        """Subclass per sample and the summed probability of its category (0–1)."""
+        p = self.scores(X)
+        sub = self.classes_[np.argmax(p, axis=1)]
+        cats = np.array([category_of(c) for c in self.classes_])
+        conf = np.array([p[i, cats == category_of(s)].sum() for i, s in enumerate(sub)])
+        return sub, conf
+
+
+def circular_mean(angles: np.ndarray) -> float:
+    a = np.asarray(angles, dtype=float)
+    a = a[np.isfinite(a)]
+    return math.atan2(np.sin(a).sum(), np.cos(a).sum()) if len(a) else math.nan

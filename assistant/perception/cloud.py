@@ -1,0 +1,261 @@
+"""Depth image → point cloud → the floor frame (dissertation 3.6.1, "Floor Detection").
+
+Frames used here:
+
+* **camera** (optical) frame: x right, y down, z forward, metres, origin at the lens;
+* **floor** frame: z up and 0 on the floor, x forward (the camera's optical axis projected on
+  the floor), y left. For a robot frame the origin is under the robot's base centre, so the
+  floor frame *is* the robot frame, levelled by the measured floor; for a frame from disk it is
+  under the camera ("camera-floor" frame).
+
+The floor is found by RANSAC (open3d ``segment_plane``) on the points near the floor that the
+camera height and tilt predict (within ``band_m``, nearer than ``near_m``), then refined on the
+points near the fitted plane, so a camera rolled by a few degrees (hand-held SUN RGB-D frames)
+still converges. Without a prediction (unknown height/tilt) the lowest large plane whose normal
+points roughly up in the image is searched for instead.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from assistant.robot.frames import CameraIntrinsics, CameraMount, camera_to_base_matrix
+
+#: RANSAC parameters of the floor fit (metres / iterations)
+RANSAC_DISTANCE_M = 0.02
+RANSAC_ITERATIONS = 60
+RANSAC_MAX_POINTS = 2000
+MIN_FLOOR_POINTS = 300
+
+
+@dataclass(frozen=True)
+class Floor:
+    """The floor plane found in a frame.
+
+    ``camera_to_floor`` (4×4) maps camera-frame points to the floor frame; ``height_m`` is the
+    camera's height above the floor; ``normal_camera`` the floor's unit up-normal in the camera
+    frame; ``inliers`` how many points supported it; ``tilt_rad``/``roll_rad`` the camera's
+    measured pitch down and roll.
+    """
+
+    camera_to_floor: np.ndarray
+    height_m: float
+    normal_camera: np.ndarray
+    inliers: int
+    tilt_rad: float
+    roll_rad: float
+
+    def to_dict(self) -> dict:
+        return {"height": round(float(self.height_m), 4),
+                "normal": [round(float(v), 5) for v in self.normal_camera],
+                "tilt_deg": round(math.degrees(self.tilt_rad), 2),
+                "roll_deg": round(math.degrees(self.roll_rad), 2),
+                "inliers": int(self.inliers)}
+
+
+def sanitize_depth(depth_m: np.ndarray, max_range_m: float = 8.0) -> np.ndarray:
+    """float32 depth with every non-finite, negative or too far reading set to 0 (missing)."""
+    d = np.asarray(depth_m, dtype=np.float32)
+    bad = ~np.isfinite(d) | (d <= 0) | (d > max_range_m)
+    if bad.any():
+        d = np.where(bad, np.float32(0.0), d)
+    return d
+
+
+def depth_to_points(depth_m: np.ndarray, intrinsics: CameraIntrinsics, stride: int = 2,
+                    max_range_m: float = 6.0) -> tuple[np.ndarray, np.ndarray]:
+    """Back-project a depth image (metres, 0 = missing) with open3d.
+
+    Returns ``(points, rows)``: (N, 3) float64 camera-frame points and the (N,) image row of
+    each point (used to tell objects cut by the top of the view).
+    """
+    import open3d as o3d
+
+    d = np.ascontiguousarray(sanitize_depth(depth_m, max_range_m + 1.0))
+    k = o3d.camera.PinholeCameraIntrinsic(intrinsics.width, intrinsics.height, intrinsics.fx,
+                                          intrinsics.fy, intrinsics.cx, intrinsics.cy)
+    cloud = o3d.geometry.PointCloud.create_from_depth_image(
+        o3d.geometry.Image(d), k, depth_scale=1.0, depth_trunc=max_range_m, stride=stride)
+    pts = np.asarray(cloud.points)
+    if len(pts) == 0:
+        return np.zeros((0, 3)), np.zeros(0)
+    rows = intrinsics.fy * pts[:, 1] / pts[:, 2] + intrinsics.cy
+    return pts, rows
+
+
+def nominal_camera_to_floor(mount: CameraMount) -> np.ndarray:
+    """4×4 camera → floor (robot base) transform predicted from the mount alone."""
+    return camera_to_base_matrix(mount)
+
+
+def transform(points: np.ndarray, matrix: np.ndarray) -> np.ndarray:
+    """Apply a 4×4 rigid transform to (N, 3) points."""
+    return points @ matrix[:3, :3].T + matrix[:3, 3]
+
+
+def _fit_plane(points: np.ndarray, seed: int, max_points: int = RANSAC_MAX_POINTS
+               ) -> tuple[np.ndarray, int] | None:
+    """RANSAC plane (open3d ``segment_plane``) on at most ``max_points`` evenly taken points,
+    then a least-squares refit on all points within the RANSAC distance.
+
+    Returns ``(plane, inliers)``: plane ``(nx, ny, nz, d)`` with unit normal, n·p + d = 0.
+    """
+    import open3d as o3d
+
+    if len(points) < 3:
+        return None
+    sub = points[:: max(1, len(points) // max_points)]
+    o3d.utility.random.seed(seed)
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(sub))
+    model, _ = cloud.segment_plane(RANSAC_DISTANCE_M, 3, RANSAC_ITERATIONS)
+    n = np.asarray(model[:3], dtype=float)
+    norm = np.linalg.norm(n)
+    if norm == 0:
+        return None
+    plane = np.append(n / norm, model[3] / norm)
+    inl = np.abs(points @ plane[:3] + plane[3]) < RANSAC_DISTANCE_M
+    if inl.sum() >= 3:
+        q = points[inl]
+        centre = q.mean(axis=0)
+        _, _, vt = np.linalg.svd(q - centre, full_matrices=False)
+        normal = vt[2] if vt[2] @ plane[:3] > 0 else -vt[2]
+        plane = np.append(normal, -normal @ centre)
+    return plane, int(inl.sum())
+
+
+def _refine(points: np.ndarray, plane: np.ndarray, band_m: float, seed: int,
+            max_turn_deg: float = 15.0, rounds: int = 3) -> tuple[np.ndarray, int] | None:
+    """RANSAC (open3d) on the points within ``band_m`` of a plane, then least-squares refits on
+    the points within the RANSAC distance of the latest plane.
+
+    Returns None (no plane) when the RANSAC plane turns by more than ``max_turn_deg`` from the
+    given one: the band then caught another surface (a bed side, a wall).
+    """
+    sel = np.abs(points @ plane[:3] + plane[3]) < band_m
+    if sel.sum() < MIN_FLOOR_POINTS:
+        return None
+    fit = _fit_plane(points[sel], seed)
+    if fit is None:
+        return None
+    new, inliers = fit
+    if new[:3] @ plane[:3] < 0:
+        new = -new
+    if new[:3] @ plane[:3] < math.cos(math.radians(max_turn_deg)):
+        return None
+    for _ in range(rounds - 1):  # the band may have cut a rolled floor short: widen to it
+        near = np.abs(points @ new[:3] + new[3]) < RANSAC_DISTANCE_M
+        if near.sum() < 3:
+            break
+        q = points[near]
+        centre = q.mean(axis=0)
+        _, _, vt = np.linalg.svd(q - centre, full_matrices=False)
+        normal = vt[2] if vt[2] @ new[:3] > 0 else -vt[2]
+        refit = np.append(normal, -normal @ centre)
+        inliers = int(near.sum())
+        if np.allclose(refit, new, atol=1e-3):
+            break
+        new = refit
+    return new, inliers
+
+
+def _search_floor(points: np.ndarray, seed: int = 0, hypotheses: int = 400,
+                  max_tilt_deg: float = 50.0, heights_m: tuple[float, float] = (0.3, 2.5)
+                  ) -> np.ndarray | None:
+    """Without a prediction: the plane with most support and (almost) nothing below it.
+
+    Plane hypotheses through random point triples whose normal is within ``max_tilt_deg`` of
+    the image's up direction (−y) and which lie ``heights_m`` below the camera are scored by
+    their inliers (5 cm) minus twice the points more than 12 cm *below* them: a bed or table top
+    has the floor under it, the floor has nothing. Returns a rough plane for :func:`_refine`.
+    """
+    sub = points[:: max(1, len(points) // 5000)]
+    if len(sub) < MIN_FLOOR_POINTS // 3:
+        return None
+    rng = np.random.default_rng(seed)
+    # triples of nearby points (the cloud is in image order), so a floor seen in a small part
+    # of the image still gets hypotheses; the refit in _refine makes the normal precise
+    first = rng.integers(0, len(sub), size=hypotheses)
+    offsets = rng.integers(3, 120, size=(hypotheses, 2))
+    idx = np.clip(np.stack([first, first + offsets[:, 0], first + offsets[:, 0] + offsets[:, 1] // 2 + 2],
+                           axis=1), 0, len(sub) - 1)
+    tri = sub[idx]
+    normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    norms = np.linalg.norm(normals, axis=1)
+    ok = norms > 1e-9
+    normals = normals[ok] / norms[ok, None]
+    normals *= np.where(normals[:, 1] > 0, -1.0, 1.0)[:, None]  # point up in the image (−y)
+    d = -np.einsum("ij,ij->i", normals, tri[ok, 0])
+    keep = (-normals[:, 1] > math.cos(math.radians(max_tilt_deg))) & (d > heights_m[0]) & (d < heights_m[1])
+    if not keep.any():
+        return None
+    normals, d = normals[keep], d[keep]
+    h = sub @ normals.T + d  # (N, M) height of each point above each plane
+    score = (np.abs(h) < 0.05).sum(axis=0) - 2 * (h < -0.12).sum(axis=0)
+    k = int(np.argmax(score))
+    if score[k] < max(20, 0.02 * len(sub)):
+        return None
+    return np.append(normals[k], d[k])
+
+
+def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: float = 0.1,
+               near_m: float = 3.0, seed: int = 0, strong_support: float = 0.2) -> Floor | None:
+    """The floor plane of a camera-frame cloud, or None when no floor is visible.
+
+    With a ``mount`` (camera height and tilt), RANSAC runs on the points within ``band_m`` of
+    the predicted floor and nearer than ``near_m`` (dissertation 3.6.1). If that plane holds
+    fewer than ``strong_support`` of the near points, and always without a mount, the lowest
+    large upward plane is also searched for (:func:`_search_floor`), and the lower of the two
+    planes wins.
+    """
+    pts = points_camera
+    if len(pts) < MIN_FLOOR_POINTS:
+        return None
+    range2 = np.einsum("ij,ij->i", pts, pts)
+    near = pts[range2 < near_m ** 2]
+    candidates = []
+    if mount is not None:
+        nominal = nominal_camera_to_floor(mount)
+        # predicted plane in camera coordinates: n = R^T z, d = the camera height
+        n = nominal[:3, :3].T @ np.array([0.0, 0.0, 1.0])
+        found = _refine(near, np.append(n, nominal[2, 3]), band_m, seed)
+        if found is not None:
+            candidates.append(found)
+    if not candidates or candidates[0][1] < strong_support * len(near):
+        # no prediction, or a weak one (an approximate height/tilt given by hand): search
+        wider = pts[range2 < (near_m + 2.0) ** 2]
+        guess = _search_floor(wider, seed)
+        if guess is not None:
+            found = _refine(wider, guess, max(band_m, 0.1), seed)
+            if found is not None:
+                candidates.append(found)
+    if not candidates:
+        return None
+    # the floor is the lowest well-supported plane: a bed or table top filling the near view
+    # can hold more points than the floor beside it
+    supported = [c for c in candidates if c[1] >= MIN_FLOOR_POINTS]
+    if not supported:
+        return None
+    plane, inliers = max(supported, key=lambda c: c[0][3])
+    return _floor_from_plane(plane, inliers, mount)
+
+
+def _floor_from_plane(plane: np.ndarray, inliers: int, mount: CameraMount | None) -> Floor:
+    """Build the camera → floor transform from the plane n·p + d = 0 (n up, camera frame)."""
+    up = plane[:3] / np.linalg.norm(plane[:3])
+    height = float(plane[3])
+    forward = np.array([0.0, 0.0, 1.0]) - up * up[2]  # optical axis projected on the floor
+    if np.linalg.norm(forward) < 1e-6:  # looking straight down: use the image's up direction
+        forward = np.array([0.0, -1.0, 0.0]) - up * (-up[1])
+    forward /= np.linalg.norm(forward)
+    left = np.cross(up, forward)
+    rot = np.vstack([forward, left, up])  # rows: floor axes in camera coordinates
+    m = np.eye(4)
+    m[:3, :3] = rot
+    m[:3, 3] = [mount.forward_m if mount else 0.0, 0.0, height]
+    tilt = math.asin(max(-1.0, min(1.0, -float(up @ np.array([0.0, 0.0, 1.0])))))
+    # roll: angle of the camera's x axis out of the floor plane
+    roll = math.asin(max(-1.0, min(1.0, float(up @ np.array([1.0, 0.0, 0.0])))))
+    return Floor(m, height, up, inliers, tilt, roll)

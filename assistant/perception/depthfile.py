@@ -1,0 +1,52 @@
+"""Read a depth image from disk (16-bit PNG) into a :class:`DepthFrame`."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from assistant.errors import AssistantError
+from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
+
+
+def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, float],
+                   depth_scale: float, *, camera_height_m: float | None = None,
+                   tilt_deg: float | None = None, invalid_values: tuple[int, ...] = (65535,)
+                   ) -> tuple[DepthFrame, bool]:
+    """Load a 16-bit depth PNG.
+
+    ``intrinsics`` is ``(fx, fy, cx, cy)`` in 0-based pixels; ``depth_scale`` the metres per
+    unit (1e-3 for millimetres, 1e-4 for Kinect v2 0.1 mm, 2e-4 for TUM's 1/5000).
+    Returns the frame and whether a mount (height *and* tilt) was given; without one the floor
+    is searched for rather than predicted.
+    """
+    from PIL import Image, UnidentifiedImageError
+
+    file = Path(path)
+    try:
+        with Image.open(file) as im:
+            raw = np.asarray(im)
+    except FileNotFoundError:
+        raise AssistantError(f"{file}: no such depth image") from None
+    except (UnidentifiedImageError, OSError) as error:
+        raise AssistantError(f"{file}: not a readable image ({error})") from None
+    if raw.ndim != 2:
+        raise AssistantError(f"{file}: expected a single-channel (16-bit) depth image, "
+                             f"got shape {raw.shape}")
+    if not (depth_scale > 0 and math.isfinite(depth_scale)):
+        raise AssistantError(f"--depth-scale must be a positive number of metres per unit, got {depth_scale}")
+    fx, fy, cx, cy = intrinsics
+    if not (fx > 0 and fy > 0):
+        raise AssistantError(f"--intrinsics: focal lengths must be positive, got fx={fx}, fy={fy}")
+    depth = raw.astype(np.float32)
+    for value in invalid_values:
+        depth[raw == value] = 0.0
+    depth *= np.float32(depth_scale)
+    h, w = depth.shape
+    k = CameraIntrinsics(w, h, float(fx), float(fy), float(cx), float(cy))
+    has_mount = camera_height_m is not None and tilt_deg is not None
+    mount = CameraMount(height_m=camera_height_m if camera_height_m is not None else 1.05,
+                        tilt_rad=math.radians(tilt_deg if tilt_deg is not None else 15.0))
+    return DepthFrame(depth, k, mount), has_mount

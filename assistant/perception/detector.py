@@ -1,0 +1,237 @@
+"""The furniture detector: a depth frame → furniture entities (Figure 3.5).
+
+Front half (:func:`~assistant.perception.frame.analyse_frame`): point cloud, floor, samples,
+features. Back half (here): the subclass classifier, the orientation estimator, the position.
+Detections are in the world frame when the frame carries the robot's pose, otherwise in the
+camera-floor frame (x forward along the camera's heading, y left, origin under the camera).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from assistant.geometry import GridMap, Pose2D, wrap_angle
+from assistant.perception.classifiers import category_of
+from assistant.perception.features import orientation_features, shape_descriptor
+from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame
+from assistant.robot.frames import DepthFrame
+from assistant.world.entity import Entity, EntityKind
+
+ORIENTATION_METHODS = ("plane", "linear")
+
+
+@dataclass(frozen=True, eq=False)
+class Detection:
+    """One recognised piece of furniture.
+
+    ``x``, ``y`` (metres) and ``facing`` (radians, None for tables) are in ``frame`` ("world"
+    or "camera-floor"); ``cells_xy`` (M, 2) the centres (metres, same frame) of the 0.05 m floor
+    cells it covers; ``partial`` says it runs out of the image (left, right or bottom).
+    """
+
+    category: str
+    subclass: str
+    x: float
+    y: float
+    facing: float | None
+    confidence: float
+    cells_xy: np.ndarray
+    height_m: float
+    partial: bool
+    frame: str
+
+    def to_dict(self) -> dict:
+        return {"category": self.category, "subclass": self.subclass, "x": round(self.x, 3),
+                "y": round(self.y, 3),
+                "facing": None if self.facing is None else round(float(self.facing), 4),
+                "confidence": round(float(self.confidence), 3), "height": round(self.height_m, 3),
+                "cells": int(len(self.cells_xy)), "partial": bool(self.partial)}
+
+
+@dataclass(eq=False)
+class DetectionResult:
+    """Detections of one frame, the floor found, why nothing was found (or None), timings."""
+
+    detections: list[Detection]
+    analysis: FrameAnalysis
+    reason: str | None
+    timings_ms: dict = field(default_factory=dict)
+
+    @property
+    def floor(self):
+        return self.analysis.floor
+
+    def to_dict(self) -> dict:
+        floor = self.analysis.floor
+        out = {"detections": [d.to_dict() for d in self.detections],
+               "floor": floor.to_dict() if floor is not None else None,
+               "samples": len(self.analysis.samples),
+               "frame": self.detections[0].frame if self.detections else None}
+        if self.reason:
+            out["reason"] = self.reason
+        return out
+
+
+class FurnitureDetector:
+    """Detects furniture in depth frames.
+
+    ``models`` is a :class:`~assistant.perception.models.PerceptionModels` (default: the cached
+    models trained on the simulator's database, trained on first use); ``orientation`` picks
+    the estimator ("plane" — this product's, default — or "linear", Table 3-3);
+    ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains);
+    a sample taller than ``tall_m`` with under ``min_surface_share`` of its points on upward
+    surfaces 0.3–0.75 m high (seat, mattress, table top) is not furniture of any category —
+    measured on real frames, these are shelves, wardrobes and water heaters the classifier
+    would otherwise call beds.
+    """
+
+    def __init__(self, models=None, orientation: str = "plane", params: FrameParams | None = None,
+                 min_confidence: float = 0.45, min_height_m: float = 0.3, tall_m: float = 1.3,
+                 min_surface_share: float = 0.05):
+        if orientation not in ORIENTATION_METHODS:
+            from assistant.errors import UnknownNameError
+
+            raise UnknownNameError("orientation estimator", orientation, ORIENTATION_METHODS)
+        if models is None:
+            from assistant.perception.models import trained_models
+
+            models = trained_models()
+        self.models = models
+        self.orientation = orientation
+        self.params = params or FrameParams()
+        self.min_confidence = min_confidence
+        self.min_height_m = min_height_m
+        self.tall_m = tall_m
+        self.min_surface_share = min_surface_share
+
+    def analyse(self, frame: DepthFrame, use_mount: bool = True) -> DetectionResult:
+        """Detections of a frame with the floor and the reason when there are none; never raises
+        on bad depth (empty, NaN, no floor, a wall filling the view)."""
+        t0 = time.perf_counter()
+        analysis = analyse_frame(frame, self.params, use_mount=use_mount)
+        t1 = time.perf_counter()
+        if not analysis.samples:
+            return DetectionResult([], analysis, analysis.reason,
+                                   {**analysis.timings_ms, "total": (t1 - t0) * 1e3})
+        shapes = np.array([shape_descriptor(s.points, s.normals) for s in analysis.samples])
+        X = np.hstack([analysis.features, shapes])
+        subclasses, confidence = self.models.classifier.predict_with_confidence(X)
+        pose = frame.robot_pose
+        frame_name = "world" if pose is not None else "camera-floor"
+        out: list[Detection] = []
+        dropped = 0
+        for sample, shape, sub, conf in zip(analysis.samples, shapes, subclasses, confidence):
+            if conf < self.min_confidence or sample.height_m < self.min_height_m:
+                dropped += 1
+                continue
+            if not _has_furniture_surface(shape, self.tall_m, self.min_surface_share):
+                dropped += 1  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+                continue
+            facing = self._facing(sample, str(sub), analysis.camera_xyz[:2])
+            cx, cy = _centre(sample.points[:, :2], facing, category_of(str(sub)), analysis.camera_xyz[:2])
+            cells = sample.cells_xy_m
+            if pose is not None:
+                cx, cy = pose.transform_points(np.array([[cx, cy]]))[0]
+                cells = pose.transform_points(cells)
+                facing = None if facing is None else wrap_angle(facing + pose.theta)
+            out.append(Detection(category_of(str(sub)), str(sub), float(cx), float(cy), facing,
+                                 float(conf), cells, float(sample.height_m), sample.touches_border,
+                                 frame_name))
+        t2 = time.perf_counter()
+        reason = None if out else f"{dropped} sample(s), none recognised as furniture"
+        return DetectionResult(out, analysis, reason, {**analysis.timings_ms,
+                                                       "classify": (t2 - t1) * 1e3,
+                                                       "total": (t2 - t0) * 1e3})
+
+    def _facing(self, sample, subclass: str, camera_xy) -> float | None:
+        if self.orientation == "linear":
+            q = orientation_features(sample.points, sample.normals, self.params.features)
+            value = self.models.linear_orientation.predict(q[None], [subclass])[0]
+        else:
+            value = self.models.plane_orientation.estimate(sample.points, sample.normals, subclass,
+                                                           camera_xy)
+        return None if not math.isfinite(value) else float(value)
+
+    def detect(self, frame: DepthFrame, grid: GridMap | None = None) -> list[Entity]:
+        """Detections as short-term entities on ``grid`` (default: a 0.1 m grid around them)."""
+        return detections_to_entities(self.analyse(frame).detections, grid)
+
+
+def _has_furniture_surface(shape: np.ndarray, tall_m: float, min_share: float) -> bool:
+    """False for a tall sample without a seat, mattress or table top (shape descriptor)."""
+    top = shape[40]
+    surface = shape[26:35].sum()  # upward-facing share in the 0.30–0.75 m height bins
+    return not (top > tall_m and surface < min_share)
+
+
+def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
+            camera_xy=(0.0, 0.0)) -> tuple[float, float]:
+    """Middle of the points' 2nd–98th percentile extent along the item's axes (its facing,
+    else the principal axes): nearer the true centre than the mean of the visible points.
+
+    Along the front axis of a chair, couch or bed seen over less than 85 % of its category's
+    typical depth (the catalogue's models), the far side is hidden: the centre is put half a
+    typical depth beyond the near side, away from the camera.
+    """
+    if len(xy) < 3:
+        c = xy.mean(axis=0)
+        return float(c[0]), float(c[1])
+    if facing is not None:
+        a = facing
+        axes = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
+    else:
+        _, vecs = np.linalg.eigh(np.cov((xy - xy.mean(axis=0)).T))
+        axes = vecs.T
+    local = xy @ axes.T
+    lo, hi = np.percentile(local, 2, axis=0), np.percentile(local, 98, axis=0)
+    mid = (lo + hi) / 2
+    depth = typical_depth_m(category) if facing is not None else None
+    if depth and hi[0] - lo[0] < 0.85 * depth:
+        cam = float(np.asarray(camera_xy, dtype=float) @ axes[0])
+        if cam <= lo[0]:
+            mid[0] = lo[0] + depth / 2
+        elif cam >= hi[0]:
+            mid[0] = hi[0] - depth / 2
+    c = mid @ axes
+    return float(c[0]), float(c[1])
+
+
+def typical_depth_m(category: str | None) -> float | None:
+    """Median front-to-back depth (metres) of the catalogue's models of a category."""
+    from assistant.world import load_catalogue
+
+    depths = []
+    for model in load_catalogue().models.values():
+        if model.category == category and model.front_offset_rad is not None:
+            along = abs(math.cos(model.front_offset_rad)) > 0.5
+            depths.append(model.length_m if along else model.width_m)
+    return float(np.median(depths)) if depths else None
+
+
+def detections_to_entities(detections: list[Detection], grid: GridMap | None = None,
+                           id_prefix: str = "seen") -> list[Entity]:
+    """Short-term entities (name = category word) from detections."""
+    from assistant.world.catalogue import category_word
+
+    if not detections:
+        return []
+    if grid is None:
+        allc = np.vstack([d.cells_xy for d in detections])
+        grid = GridMap.covering(*allc.min(axis=0), *allc.max(axis=0), resolution_m=0.1, margin_m=0.2)
+    out = []
+    for i, d in enumerate(detections):
+        cells = grid.world_to_cell(d.cells_xy)
+        cells = np.unique(cells[grid.contains_cells(cells)], axis=0)
+        out.append(Entity(f"{id_prefix}:{i}", category_word(d.category), EntityKind.SHORT_TERM, grid,
+                          cells, d.facing, category=d.category, confidence=d.confidence,
+                          attributes={"subclass": d.subclass, "x": d.x, "y": d.y,
+                                      "height_m": d.height_m, "partial": d.partial}))
+    return out
+
+
+def frame_pose_or_none(frame: DepthFrame) -> Pose2D | None:
+    return frame.robot_pose

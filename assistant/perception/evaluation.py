@@ -1,0 +1,234 @@
+"""``assistant eval perception``: Tables 3-6 to 3-9 of the dissertation, on this product.
+
+* Table 3-6 — category accuracy of the three classifiers on held-out simulated views of the
+  study models (the grid views of 3.7.2 plus random views, none used in training);
+* Table 3-7 — the same classifiers, trained on the study models, on the *other* instances;
+* Table 3-8 — orientation error (mean/std, degrees) per subclass, both estimators;
+* Table 3-9 — the 16 scenes: position error, orientation error, spatial relations;
+* real frames (``--realdata PATH``, e.g. ``../shared/realdata``), reported separately.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numpy as np
+
+CATEGORY_ORDER = ("small table", "chair", "large table", "couch", "bed")
+TEST_PLAN_ARGS = dict(grid=True, random_per_item=16, seed=2)
+OTHER_PLAN_ARGS = dict(grid=True, seed=3)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--realdata", metavar="PATH",
+                        help="folder of real depth frames (the shared realdata folder) to score too")
+    parser.add_argument("--skip", default="", metavar="PARTS",
+                        help="comma-separated parts to skip: classify,orientation,scenes,real")
+    parser.add_argument("--classifiers", default="lsvm,gsvm,autoencoder",
+                        help="classifiers to compare (default: all three)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from assistant.cli.common import emit_json
+
+    skip = {s.strip() for s in (args.skip or "").split(",") if s.strip()}
+    methods = [m.strip() for m in args.classifiers.split(",") if m.strip()]
+    report: dict = {}
+    t0 = time.perf_counter()
+    if not {"classify", "orientation"} <= skip:
+        train, test, other = databases()
+        report["databases"] = {"train": len(train), "test": len(test), "other": len(other),
+                               "missed_views": {"test": test.missed, "other": other.missed},
+                               "seconds": round(time.perf_counter() - t0, 1)}
+        if "classify" not in skip:
+            report["table_3_6"], report["table_3_7"] = classification_tables(train, test, other, methods)
+        if "orientation" not in skip:
+            report["table_3_8"] = orientation_table(train, test, other)
+    if "scenes" not in skip:
+        report["table_3_9"] = scene_table()
+    if args.realdata and "real" not in skip:
+        from assistant.perception.detector import FurnitureDetector
+        from assistant.perception.realdata import evaluate_realdata
+
+        report["realdata"] = evaluate_realdata(args.realdata, FurnitureDetector())
+    report["seconds"] = round(time.perf_counter() - t0, 1)
+    if args.json:
+        emit_json(report)
+    else:
+        _print(report)
+    return 0
+
+
+def databases():
+    """(training, held-out study views, other instances) — cached renders."""
+    from assistant.perception.database import ViewPlan, cached_database, other_items, study_items
+    from assistant.perception.models import training_database
+
+    train = training_database()
+    test = cached_database("test", study_items(), ViewPlan(**TEST_PLAN_ARGS))
+    other = cached_database("other", other_items(), ViewPlan(**OTHER_PLAN_ARGS))
+    return train, test, other
+
+
+def _per_category(pred: np.ndarray, truth: np.ndarray) -> dict:
+    out = {}
+    for c in CATEGORY_ORDER:
+        m = truth == c
+        if m.any():
+            out[c] = {"n": int(m.sum()), "accuracy": round(float((pred[m] == c).mean()), 4)}
+    out["all"] = {"n": int(len(truth)), "accuracy": round(float((pred == truth).mean()), 4)}
+    return out
+
+
+def classification_tables(train, test, other, methods=("lsvm", "gsvm", "autoencoder")):
+    """Tables 3-6 and 3-7: per-category accuracy per classifier (and feature set)."""
+    from assistant.perception.models import classifier_input, fit_models
+
+    t36, t37 = {}, {}
+    variants = [(m, "mh+shape") for m in methods] + [("gsvm", "mh")]
+    for method, features in variants:
+        t = time.perf_counter()
+        models = fit_models(train, method, features)
+        fit_s = time.perf_counter() - t
+        name = f"{method} ({features})"
+        for table, db in ((t36, test), (t37, other)):
+            t = time.perf_counter()
+            pred = models.classifier.predict_category(classifier_input(db))
+            table[name] = _per_category(pred, db.category)
+            table[name]["fit_seconds"] = round(fit_s, 2)
+            table[name]["predict_ms_per_sample"] = round((time.perf_counter() - t) * 1e3 / max(1, len(db)), 3)
+    return t36, t37
+
+
+def view_subclass(category: str, alpha: float) -> str:
+    """The subclass a view belongs to by its true angle α between front and camera:
+    front |α| ≤ 60°, back |α| ≥ 120°, side otherwise (chairs and beds: front/back at 90°)."""
+    if category not in ("chair", "couch", "bed") or not math.isfinite(alpha):
+        return category
+    a = abs(math.degrees(alpha))
+    if category == "couch":
+        return "couch+front" if a <= 60 else "couch+back" if a >= 120 else "couch+side"
+    return f"{category}+front" if a <= 90 else f"{category}+back"
+
+
+def orientation_table(train, test, other) -> dict:
+    """Table 3-8: error mean/std (degrees) per subclass; linear (Table 3-3) vs plane estimator.
+
+    Subclass of a view by its true angle (:func:`view_subclass`); the linear estimator uses the
+    subclass the classifier predicts (as the detector does). Views with no estimate are counted.
+    """
+    from assistant.perception.models import classifier_input, fit_models
+    from assistant.perception.orientation import angle_error
+
+    models = fit_models(train)
+    out = {}
+    for name, db in (("study", test), ("other", other)):
+        has = np.isfinite(db.facing)
+        pred_sub = models.classifier.predict(classifier_input(db))
+        lin = models.linear_orientation.predict(db.Q, pred_sub)
+        rows = {}
+        true_sub = np.array([view_subclass(c, a) for c, a in zip(db.category, db.alpha)])
+        plane = np.array([models.plane_orientation.estimate(p, n, s) for (p, n), s
+                          in zip(db.points, db.category)])
+        for sub in sorted(set(true_sub[has])):
+            m = true_sub == sub
+            row = {"n": int(m.sum())}
+            for est_name, est in (("linear", lin), ("plane", plane)):
+                e = np.degrees(angle_error(est[m], db.facing[m]))
+                ok = np.isfinite(e)
+                row[est_name] = {"mean": round(float(e[ok].mean()), 1) if ok.any() else None,
+                                 "std": round(float(e[ok].std()), 1) if ok.any() else None,
+                                 "median": round(float(np.median(e[ok])), 1) if ok.any() else None,
+                                 "no_estimate": int((~ok).sum())}
+            rows[sub] = row
+        for cat in ("chair", "couch", "bed"):
+            m = db.category == cat
+            if m.any():
+                e = np.degrees(angle_error(plane[m], db.facing[m]))
+                ok = np.isfinite(e)
+                rows[f"{cat} (all views)"] = {"n": int(m.sum()), "plane": {
+                    "mean": round(float(e[ok].mean()), 1), "std": round(float(e[ok].std()), 1),
+                    "median": round(float(np.median(e[ok])), 1), "no_estimate": int((~ok).sum())}}
+        out[name] = rows
+    return out
+
+
+def scene_table() -> dict:
+    """Table 3-9 over the 16 scenes, with summary figures."""
+    from assistant.perception.detector import FurnitureDetector
+    from assistant.perception.scenes import SCENES, evaluate_scene
+
+    detector = FurnitureDetector()
+    rows = []
+    for number, (world, ids) in enumerate(SCENES, start=1):
+        row = evaluate_scene(world, ids, detector)
+        row["scene"] = number
+        rows.append(row)
+    pe = [i["position_error_m"] for r in rows for i in r["items"] if "position_error_m" in i]
+    oe = [i["orientation_error_rad"] for r in rows for i in r["items"] if "orientation_error_rad" in i]
+    found = sum(1 for r in rows for i in r["items"] if i.get("detected") is not None)
+    total = sum(len(r["items"]) for r in rows)
+    return {"scenes": rows, "summary": {
+        "items_found": f"{found}/{total}",
+        "position_error_mean_m": round(float(np.mean(pe)), 3) if pe else None,
+        "position_error_max_m": round(float(np.max(pe)), 3) if pe else None,
+        "orientation_error_mean_rad": round(float(np.mean(oe)), 3) if oe else None,
+        "words_right": sum(1 for r in rows for i in r["items"] if i.get("word_right")),
+        "sr_match": f"{sum(1 for r in rows if r['sr_match'])}/{len(rows)}"}}
+
+
+def _print(report: dict) -> None:
+    from assistant.cli.common import print_table
+
+    if "databases" in report:
+        print(f"databases: {report['databases']}")
+    for key, title in (("table_3_6", "Table 3-6: held-out simulated views of the study models"),
+                       ("table_3_7", "Table 3-7: trained on the study models, tested on other instances")):
+        if key not in report:
+            continue
+        print(f"\n{title}")
+        table = report[key]
+        names = list(table)
+        rows = []
+        for c in (*CATEGORY_ORDER, "all"):
+            first = table[names[0]].get(c)
+            if first is None:
+                continue
+            rows.append([c, first["n"], *[f"{100 * table[n][c]['accuracy']:.1f}%" for n in names]])
+        print_table(rows, ["category", "samples", *names])
+    if "table_3_8" in report:
+        print("\nTable 3-8: orientation error, degrees (mean/std)")
+        for db, rows in report["table_3_8"].items():
+            out = []
+            for sub, row in rows.items():
+                lin = row.get("linear")
+                pl = row["plane"]
+                out.append([sub, row["n"], "-" if lin is None else f"{lin['mean']}/{lin['std']}",
+                            f"{pl['mean']}/{pl['std']} (median {pl['median']}, none {pl['no_estimate']})"])
+            print(f"  {db} database")
+            print_table(out, ["subclass", "views", "linear (Table 3-3)", "plane (this product)"])
+    if "table_3_9" in report:
+        print("\nTable 3-9: scenes")
+        rows = []
+        for r in report["table_3_9"]["scenes"]:
+            pe = "/".join(f"{i['position_error_m']:.2f}" if "position_error_m" in i else "miss" for i in r["items"])
+            oe = "/".join(f"{i['orientation_error_rad']:.2f}" if "orientation_error_rad" in i else "-" for i in r["items"])
+            rows.append([r["scene"], r["world"], " ".join(i["id"] for i in r["items"]), pe, oe,
+                         "Y" if r["sr_match"] else "N", r["views"]])
+        print_table(rows, ["#", "world", "items", "PE (m)", "OE (rad)", "SR", "views"])
+        print(f"summary: {report['table_3_9']['summary']}")
+    if "realdata" in report:
+        print("\nReal frames")
+        for folder, frames in report["realdata"]["folders"].items():
+            for f in frames:
+                floor = f["floor"]
+                fl = f"floor {floor['height']:.2f} m, tilt {floor['tilt_deg']:.1f}°, roll {floor['roll_deg']:.1f}°" if floor else "no floor"
+                dets = ", ".join(d["category"] for d in f["detections"]) or f"none ({f['reason']})"
+                print(f"  {folder}/{f['file']}: {fl}; detections: {dets}")
+                for m in f.get("matches", []):
+                    print(f"      {m['object']}: {m.get('detected')} (pixels {m['pixels']})")
+                for b in f.get("boxes", []):
+                    print(f"      {b['object']}: {b['detected']}")
+    print(f"\n{report['seconds']} s")

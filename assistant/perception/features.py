@@ -1,0 +1,175 @@
+"""Features of a furniture sample (dissertation 3.6.2 and 3.6.5).
+
+* point normals (open3d, neighbours within ``normal_radius_m``), oriented towards the camera;
+* the **normal feature histogram** M_h: over bins of radius r (horizontal distance from the
+  sample's centroid, 0–2 m) × height z (0–1 m), 0.05 m steps, the mean normalised elevation
+
+      v_p = atan(|nz| / sqrt(nx² + ny²)) / (π/2)          (equation 3-1, in [0, 1])
+
+  of the points in the bin, −1 where the bin is empty (points above 1 m count in the top row);
+* the **orientation features** of 3.6.5: per (r, z) bin the circular mean of the normals'
+  horizontal direction q_p = atan2(ny, nx) (equation 3-4) in the floor frame, NaN where empty.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from assistant.perception.samples import FurnitureSample
+
+
+@dataclass(frozen=True)
+class FeatureParams:
+    """Histogram geometry (metres) and the normal-estimation neighbourhood."""
+
+    radius_max_m: float = 2.0
+    height_max_m: float = 1.0
+    bin_m: float = 0.05
+    normal_radius_m: float = 0.12
+    normal_max_nn: int = 12
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(radius bins, height bins)."""
+        return (int(round(self.radius_max_m / self.bin_m)), int(round(self.height_max_m / self.bin_m)))
+
+    @property
+    def length(self) -> int:
+        r, h = self.shape
+        return r * h
+
+
+def estimate_normals(points: np.ndarray, camera_xyz: np.ndarray | None = None,
+                     params: FeatureParams = FeatureParams()) -> np.ndarray:
+    """(N, 3) unit normals of a floor-frame sample (open3d), pointing towards ``camera_xyz``
+    (the camera's position in the same frame; the origin raised 1 m if None)."""
+    import open3d as o3d
+
+    if len(points) < 3:
+        return np.tile([0.0, 0.0, 1.0], (len(points), 1))
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    cloud.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(params.normal_radius_m,
+                                                               params.normal_max_nn))
+    normals = np.asarray(cloud.normals)
+    cam = np.array([0.0, 0.0, 1.0]) if camera_xyz is None else np.asarray(camera_xyz, dtype=float)
+    flip = np.einsum("ij,ij->i", normals, cam - points) < 0
+    normals[flip] *= -1.0
+    return normals
+
+
+def _bins(points: np.ndarray, params: FeatureParams) -> tuple[np.ndarray, np.ndarray]:
+    """Flat bin index of each point and a mask of the points inside the radius range."""
+    nr, nz = params.shape
+    centre = points[:, :2].mean(axis=0)
+    radius = np.linalg.norm(points[:, :2] - centre, axis=1)
+    ir = np.floor(radius / params.bin_m).astype(int)
+    iz = np.clip(np.floor(points[:, 2] / params.bin_m).astype(int), 0, nz - 1)
+    inside = ir < nr
+    return ir * nz + iz, inside
+
+
+def normal_histogram(points: np.ndarray, normals: np.ndarray,
+                     params: FeatureParams = FeatureParams()) -> np.ndarray:
+    """The normal feature histogram M_h, flattened (radius-major) to ``params.length`` values."""
+    length = params.length
+    if len(points) == 0:
+        return np.full(length, -1.0)
+    horizontal = np.hypot(normals[:, 0], normals[:, 1])
+    v = np.arctan2(np.abs(normals[:, 2]), horizontal) / (math.pi / 2)  # equation 3-1
+    flat, inside = _bins(points, params)
+    sums = np.bincount(flat[inside], weights=v[inside], minlength=length)
+    counts = np.bincount(flat[inside], minlength=length)
+    out = np.full(length, -1.0)
+    filled = counts > 0
+    out[filled] = sums[filled] / counts[filled]
+    return out
+
+
+def orientation_features(points: np.ndarray, normals: np.ndarray,
+                         params: FeatureParams = FeatureParams(),
+                         min_horizontal: float = 0.3) -> np.ndarray:
+    """Per (r, z) bin the circular mean of q_p = atan2(ny, nx) (equation 3-4), radians in the
+    floor frame, NaN where no point has a normal at least ``min_horizontal`` off vertical."""
+    length = params.length
+    out = np.full(length, np.nan)
+    if len(points) == 0:
+        return out
+    horizontal = np.hypot(normals[:, 0], normals[:, 1])
+    q = np.arctan2(normals[:, 1], normals[:, 0])
+    flat, inside = _bins(points, params)
+    use = inside & (horizontal >= min_horizontal)
+    s = np.bincount(flat[use], weights=np.sin(q[use]), minlength=length)
+    c = np.bincount(flat[use], weights=np.cos(q[use]), minlength=length)
+    n = np.bincount(flat[use], minlength=length)
+    filled = n > 0
+    out[filled] = np.arctan2(s[filled], c[filled])
+    return out
+
+
+#: length of :func:`shape_descriptor`
+SHAPE_LENGTH = 2 * 20 + 9
+
+
+def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: float = 1.0,
+                     bin_m: float = 0.05) -> np.ndarray:
+    """Size and height profile of a sample, the same from any side (an addition to M_h).
+
+    The share of points per 0.05 m height bin (0–1 m, higher points in the top bin); the share
+    of *upward-facing* points (|nz| > 0.9: seats, mattresses, table tops) per height bin; the
+    top height; the lengths (98th − 2nd percentile) along the two principal axes of the points
+    on the floor; the height of the highest large upward surface; and of the tall part (the
+    points above 75 % of the top: backrest, headboard) its length along its line, the item's
+    depth across that line, their ratio, how far it rises above the upward surface (a couch's
+    back runs along its long side, a bed's headboard across), and how far off the item's middle
+    it stands (a backrest at the edge, an object on a table in the middle). Metres or shares.
+    """
+    nbins = int(round(height_max_m / bin_m))
+    out = np.zeros(SHAPE_LENGTH)
+    if len(points) < 3:
+        return out
+    z = points[:, 2]
+    iz = np.clip((z / bin_m).astype(int), 0, nbins - 1)
+    out[:nbins] = np.bincount(iz, minlength=nbins) / len(points)
+    up = np.abs(normals[:, 2]) > 0.9
+    if up.any():
+        out[nbins:2 * nbins] = np.bincount(iz[up], minlength=nbins) / len(points)
+    xy = points[:, :2] - points[:, :2].mean(axis=0)
+    _, vecs = np.linalg.eigh(np.cov(xy.T))
+    along = xy @ vecs
+    ext = np.percentile(along, 98, axis=0) - np.percentile(along, 2, axis=0)
+    out[2 * nbins] = float(np.percentile(z, 99))
+    out[2 * nbins + 1] = float(ext.max())
+    out[2 * nbins + 2] = float(ext.min())
+    if up.sum() >= 5:
+        counts = np.bincount(iz[up], minlength=nbins)
+        strong = np.nonzero(counts >= max(3, 0.2 * counts.max()))[0]
+        if len(strong):
+            out[2 * nbins + 3] = (strong[-1] + 0.5) * bin_m
+    # the tall part (backrest, headboard): its length on the floor plan, the item's depth
+    # across it, and how far above the main upward surface it rises
+    high = z > 0.75 * out[2 * nbins]
+    if high.sum() >= 5:
+        hxy = points[high, :2] - points[high, :2].mean(axis=0)
+        _, hv = np.linalg.eigh(np.cov(hxy.T))
+        line = hxy @ hv[:, 1]
+        across = (points[:, :2] - points[high, :2].mean(axis=0)) @ hv[:, 0]
+        out[2 * nbins + 4] = float(np.percentile(line, 98) - np.percentile(line, 2))
+        out[2 * nbins + 5] = float(np.percentile(np.abs(across), 95))
+        out[2 * nbins + 6] = out[2 * nbins + 4] / max(out[2 * nbins + 5], 0.05)
+        out[2 * nbins + 7] = out[2 * nbins] - out[2 * nbins + 3]
+        # where the tall part stands across the item: at its edge (a chair's back, a couch's,
+        # a headboard) or in its middle (a monitor or lamp on a table)
+        mid = (np.percentile(across, 98) + np.percentile(across, 2)) / 2
+        out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
+    return out
+
+
+def sample_features(sample: FurnitureSample, camera_xyz: np.ndarray | None = None,
+                    params: FeatureParams = FeatureParams()) -> np.ndarray:
+    """Estimate (and store on the sample) the normals, then return the histogram M_h."""
+    if sample.normals is None:
+        sample.normals = estimate_normals(sample.points, camera_xyz, params)
+    return normal_histogram(sample.points, sample.normals, params)

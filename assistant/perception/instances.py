@@ -1,0 +1,196 @@
+"""Meshes of the *other* furniture instances (``data/instances.yaml``) for the cross-database
+test, and size-jittered copies of the catalogue models for training.
+
+The study homes' models come from the simulator (:func:`assistant.sim.meshes.furniture_mesh`);
+the instances here are built the same way (open3d boxes and cylinders, model frame x along the
+length, y across, z up, origin on the floor at the footprint centre) but differ in size and
+build: slatted or framed backs, round legs, pedestal bases, arms, footboards.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+import yaml
+
+from assistant.errors import DataFileError, UnknownNameError
+from assistant.world import CATEGORIES
+
+#: catalogue convention: angle (radians) from the model's +x to its functional front
+FRONT_OFFSET_RAD = {"chair": -math.pi / 2, "couch": 0.0, "bed": math.pi,
+                    "small table": None, "large table": None}
+
+
+@dataclass(frozen=True)
+class Instance:
+    """One furniture instance of the second database (sizes in metres)."""
+
+    name: str
+    category: str
+    build: str
+    length_m: float
+    width_m: float
+    height_m: float
+    options: dict
+
+    @property
+    def front_offset_rad(self) -> float | None:
+        return FRONT_OFFSET_RAD[self.category]
+
+
+@lru_cache(maxsize=1)
+def load_instances() -> dict[str, Instance]:
+    """The instances of ``data/instances.yaml`` by name (validated)."""
+    path = resources.files("assistant.perception") / "data" / "instances.yaml"
+    data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+    out: dict[str, Instance] = {}
+    for name, spec in (data.get("instances") or {}).items():
+        where = f"instances.{name}"
+        if spec.get("category") not in CATEGORIES:
+            raise DataFileError("instances.yaml", f"{where}.category",
+                                f"expected one of {', '.join(CATEGORIES)}, got {spec.get('category')!r}")
+        if spec.get("build") not in _BUILDERS:
+            raise DataFileError("instances.yaml", f"{where}.build",
+                                f"expected one of {', '.join(_BUILDERS)}, got {spec.get('build')!r}")
+        try:
+            dims = [float(spec[k]) for k in ("length", "width", "height")]
+        except (KeyError, TypeError, ValueError):
+            raise DataFileError("instances.yaml", where, "length, width and height must be numbers") from None
+        options = {k: v for k, v in spec.items() if k not in ("category", "build", "length", "width", "height")}
+        out[name] = Instance(name, spec["category"], spec["build"], *dims, options)
+    return out
+
+
+def instance_mesh(name: str):
+    """The open3d mesh of an instance (model frame)."""
+    import open3d as o3d
+
+    instances = load_instances()
+    if name not in instances:
+        raise UnknownNameError("furniture instance", name, instances)
+    inst = instances[name]
+    parts = _BUILDERS[inst.build](inst.length_m, inst.width_m, inst.height_m, inst.options)
+    mesh = o3d.geometry.TriangleMesh()
+    for part in parts:
+        mesh += part
+    mesh.compute_vertex_normals()
+    return mesh
+
+
+def scaled_mesh(mesh, sx: float, sy: float, sz: float):
+    """A copy of a model-frame mesh scaled along its axes (training-set jitter)."""
+    import open3d as o3d
+
+    out = o3d.geometry.TriangleMesh(mesh)
+    v = np.asarray(out.vertices) * np.array([sx, sy, sz])
+    out.vertices = o3d.utility.Vector3dVector(v)
+    return out
+
+
+# ------------------------------------------------------------------------------ builders
+
+def _box(cx, cy, z0, sx, sy, sz):
+    import open3d as o3d
+
+    b = o3d.geometry.TriangleMesh.create_box(max(sx, 1e-3), max(sy, 1e-3), max(sz, 1e-3))
+    b.translate((cx - sx / 2, cy - sy / 2, z0))
+    return b
+
+
+def _cyl(cx, cy, z0, radius, height, sides=16):
+    import open3d as o3d
+
+    c = o3d.geometry.TriangleMesh.create_cylinder(radius, height, sides, 1)
+    c.translate((cx, cy, z0 + height / 2))
+    return c
+
+
+def _legs(half_x, half_y, height, style, side=0.045):
+    ox, oy = half_x - 0.03 - side / 2, half_y - 0.03 - side / 2
+    spots = [(sx * ox, sy * oy) for sx in (-1, 1) for sy in (-1, 1)]
+    if style == "round":
+        return [_cyl(x, y, 0.0, side / 2, height) for x, y in spots]
+    if style == "pedestal":
+        return [_cyl(0.0, 0.0, 0.0, 0.05, height), _cyl(0.0, 0.0, 0.0, min(half_x, half_y) * 0.8, 0.04, 24)]
+    if style == "panel":  # two full-width end panels
+        return [_box(sx * ox, 0.0, 0.0, 0.04, 2 * oy + side, height) for sx in (-1, 1)]
+    return [_box(x, y, 0.0, side, side, height) for x, y in spots]
+
+
+def _table(length, width, height, o):
+    top_z = height - 0.035
+    if o.get("top") == "round":
+        top = _cyl(0.0, 0.0, top_z, 0.5, 0.035, 40)
+        v = np.asarray(top.vertices) * np.array([length, width, 1.0])
+        v[:, 2] = np.asarray(top.vertices)[:, 2]
+        import open3d as o3d
+
+        top.vertices = o3d.utility.Vector3dVector(v)
+        reach = 0.5 * math.cos(math.pi / 4)
+        legs = _legs(length * reach, width * reach, top_z, o.get("legs", "square"))
+    else:
+        top = _box(0.0, 0.0, top_z, length, width, 0.035)
+        legs = _legs(length / 2, width / 2, top_z, o.get("legs", "square"))
+    return [top, *legs]
+
+
+def _chair(length, width, height, o):
+    seat_z = float(o.get("seat", 0.45))
+    seat_t, back_t = 0.05, 0.04
+    parts = [_box(0.0, 0.0, seat_z, length, width, seat_t)]
+    legs = o.get("legs", "square")
+    if legs == "arms":  # upholstered: a solid base and two arms
+        parts.append(_box(0.0, 0.0, 0.0, length, width, seat_z))
+        parts += [_box(sx * (length / 2 - 0.06), 0.0, 0.0, 0.12, width, seat_z + 0.22) for sx in (-1, 1)]
+    else:
+        parts += _legs(length / 2, width / 2, seat_z, legs)
+    by = width / 2 - back_t / 2
+    top = height - seat_z - seat_t
+    back = o.get("back", "solid")
+    z0 = seat_z + seat_t
+    if back == "slats":
+        parts += [_box(x, by, z0, 0.06, back_t, top) for x in np.linspace(-length / 2 + 0.04, length / 2 - 0.04, 4)]
+        parts.append(_box(0.0, by, height - 0.08, length, back_t, 0.08))
+    elif back == "frame":
+        parts += [_box(sx * (length / 2 - 0.025), by, z0, 0.05, back_t, top) for sx in (-1, 1)]
+        parts.append(_box(0.0, by, height - 0.15, length, back_t, 0.15))
+    elif back == "half":
+        parts.append(_box(0.0, by, z0 + top * 0.35, length, back_t, top * 0.65))
+        parts.append(_box(0.0, by, z0, 0.06, back_t, top * 0.35))
+    else:
+        parts.append(_box(0.0, by, z0, length, back_t, top))
+    return parts
+
+
+def _couch(length, width, height, o):
+    seat = float(o.get("seat", 0.42))
+    arm_h = float(o.get("arm", 0.6))
+    back_t = min(0.22, length * 0.28)
+    arm_w = 0.18 if arm_h > 0 else 0.0
+    z0 = 0.12 if o.get("legs") else 0.0
+    parts = [_box(back_t / 2, 0.0, z0, length - back_t, width - 2 * arm_w, seat - z0),
+             _box(-length / 2 + back_t / 2, 0.0, z0, back_t, width, height - z0)]
+    if arm_w:
+        parts += [_box(back_t / 2, sy * (width / 2 - arm_w / 2), z0, length - back_t, arm_w, arm_h - z0)
+                  for sy in (-1, 1)]
+    if z0:
+        parts += _legs(length / 2, width / 2, z0, "square", 0.05)
+    return parts
+
+
+def _bed(length, width, height, o):
+    board_t = 0.07
+    mattress = float(o.get("mattress", 0.5))
+    foot = float(o.get("footboard", 0.0))
+    parts = [_box(0.0, 0.0, 0.0, length - 2 * board_t, width, mattress),
+             _box(length / 2 - board_t / 2, 0.0, 0.0, board_t, width, height),
+             _box(length / 2 - board_t - 0.25, 0.0, mattress, 0.4, width * 0.75, 0.12)]
+    parts.append(_box(-length / 2 + board_t / 2, 0.0, 0.0, board_t, width, foot if foot > 0 else mattress))
+    return parts
+
+
+_BUILDERS = {"table": _table, "chair": _chair, "couch": _couch, "bed": _bed}

@@ -1,0 +1,82 @@
+"""Training the detector's models from the simulator-rendered database, cached.
+
+:func:`training_database` renders (or loads) the study models' training views;
+:func:`trained_models` fits the subclass classifier and both orientation estimators on them and
+caches the result under ``cache_dir()/perception`` keyed by the database's content hash and the
+settings. Deterministic: fixed seeds throughout.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import pickle
+from dataclasses import dataclass
+
+import numpy as np
+
+from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.perception.classifiers import FurnitureClassifier, view_subclasses
+from assistant.perception.database import (
+    Database,
+    ViewPlan,
+    cached_database,
+    database_key,
+    study_items,
+)
+from assistant.perception.orientation import LinearOrientationEstimator, PlaneOrientationEstimator
+
+#: the training views: random poses of every study model, scaled by up to ±12 % and ±30 %,
+#: half of the tables with a target object on top
+TRAINING_PLANS = (ViewPlan(grid=False, random_per_item=40, jitter=0.12, seed=1, objects=0.5),
+                  ViewPlan(grid=False, random_per_item=40, jitter=0.30, seed=5, objects=0.5))
+DEFAULT_METHOD = "gsvm"
+DEFAULT_FEATURES = "mh+shape"
+
+
+def training_database(plans=TRAINING_PLANS, items=None) -> Database:
+    """The training views (rendered once, then read from the cache)."""
+    items = items if items is not None else study_items()
+    return Database.concat([cached_database(f"train{i}", items, plan) for i, plan in enumerate(plans)])
+
+
+def classifier_input(db: Database) -> np.ndarray:
+    """``[M_h | shape descriptor]`` per sample: what :class:`FurnitureClassifier` reads."""
+    return np.hstack([db.X, db.S])
+
+
+@dataclass
+class PerceptionModels:
+    """What the detector needs: the subclass classifier and the orientation estimators."""
+
+    classifier: FurnitureClassifier
+    linear_orientation: LinearOrientationEstimator
+    plane_orientation: PlaneOrientationEstimator
+    subclasses: tuple[str, ...]
+    training_samples: int
+
+
+def fit_models(db: Database, method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
+               seed: int = 0) -> PerceptionModels:
+    """Fit all models on a labelled database (subclasses by k-means, 3.6.3)."""
+    sub = view_subclasses(db.X, db.category, db.alpha, seed=seed)
+    clf = FurnitureClassifier(method, features, random_state=seed).fit(classifier_input(db), sub)
+    lin = LinearOrientationEstimator().fit(db.Q, sub, db.facing)
+    return PerceptionModels(clf, lin, PlaneOrientationEstimator().fit(), tuple(sorted(set(sub))), len(db))
+
+
+def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
+                   plans=TRAINING_PLANS, items=None) -> PerceptionModels:
+    """The models trained on the training database, cached by a hash of their inputs."""
+    items = items if items is not None else study_items()
+    keys = [database_key(f"train{i}", items, plan) for i, plan in enumerate(plans)]
+    key = hashlib.sha256(repr((keys, method, features, "models-1")).encode()).hexdigest()[:16]
+    path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
+    if path.exists():
+        try:
+            with open(path, "rb") as handle:
+                return pickle.load(handle)
+        except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+            pass  # stale or damaged cache: retrain
+    models = fit_models(training_database(plans, items), method, features)
+    atomic_write_bytes(path, pickle.dumps(models))
+    return models

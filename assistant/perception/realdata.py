@@ -1,0 +1,137 @@
+"""Scoring the detector on real depth frames from a folder a user gives (``--realdata PATH``).
+
+The product never ships these files; it reads them in place. Known folder layouts (depth
+units, intrinsics, labels) are described here so ``assistant eval perception --realdata PATH``
+can score each: SUN RGB-D (3D boxes with a gravity frame ``Rtilt``), and frames with visual 2D
+boxes (NYU living room, Kinect v2 living room, TUM office), and negatives (NYU basement).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+#: folder → (depth files, (fx, fy, cx, cy), metres per unit, invalid raw values, labels)
+FOLDERS = {
+    "sunrgbd_kv2_mmdet3d": ([f"00000{i}_depth.png" for i in range(1, 5)], (529.5, 529.5, 364.0, 264.0),
+                            1e-3, (65535,), "sun"),
+    "nyu_livingroom_unidepth": (["depth.png"], (518.8579, 519.4696, 325.5825, 253.7362), 1e-3,
+                                (10000, 65535), "boxes2d"),
+    "kinect2_livingroom_esanet": (["sample_depth.png"], (365.0, 365.0, 256.0, 212.0), 1e-4,
+                                  (65535,), "boxes2d"),
+    "tum_office_open3d": (["TUM_depth.png"], (525.0, 525.0, 319.5, 239.5), 2e-4, (65535,), "boxes2d"),
+    "nyu_basement_metric3d": ([f"sync_depth_{i}.png" for i in ("00000", "00050", "00100")],
+                              (518.8579, 519.4696, 325.5825, 253.7362), 1e-3, (65535,), "negative"),
+}
+SUN_CATEGORY = {"bed": "bed", "night_stand": "small table"}
+
+
+def _floor_to_camera(floor, xyz: np.ndarray) -> np.ndarray:
+    m = floor.camera_to_floor
+    return (np.atleast_2d(xyz) - m[:3, 3]) @ m[:3, :3]
+
+
+def evaluate_realdata(root: str | Path, detector) -> dict:
+    """Per folder and frame: the floor, the detections, and the scores its labels allow."""
+    from assistant.perception.depthfile import load_depth_png
+
+    root = Path(root)
+    out: dict = {"root": str(root), "folders": {}}
+    for folder, (files, k, scale, invalid, labels) in FOLDERS.items():
+        base = root / folder
+        if not base.is_dir():
+            continue
+        frames = []
+        for name in files:
+            path = base / name
+            if not path.exists():
+                continue
+            frame, _ = load_depth_png(path, k, scale, invalid_values=invalid)
+            if folder == "kinect2_livingroom_esanet":  # flying pixels under 0.5 m
+                frame.depth_m[frame.depth_m < 0.5] = 0.0
+            result = detector.analyse(frame, use_mount=False)
+            entry = {"file": name, "floor": result.floor.to_dict() if result.floor else None,
+                     "detections": [d.to_dict() for d in result.detections],
+                     "reason": result.reason, "ms": round(result.timings_ms.get("total", 0.0), 1)}
+            if labels == "sun":
+                entry.update(_score_sun(base, name[:6], result, frame))
+            elif labels == "boxes2d":
+                entry.update(_score_boxes(base, result, frame))
+            elif labels == "negative":
+                entry["false_beds_or_couches"] = sum(d.category in ("bed", "couch") for d in result.detections)
+            frames.append(entry)
+        out["folders"][folder] = frames
+    return out
+
+
+def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
+    """Floor vs Rtilt; each labelled bed / night stand matched to the nearest detection."""
+    data = json.loads((base / f"{frame_id}_boxes.json").read_text())
+    rtilt = np.asarray(data["Rtilt"], dtype=float)
+    up_cam = np.array([rtilt[2, 0], -rtilt[2, 2], rtilt[2, 1]])  # upright z in camera axes
+    score: dict = {"truth_camera_height": data.get("camera_height_above_floor_m_estimate")}
+    floor = result.floor
+    if floor is None:
+        return score
+    score["floor_normal_error_deg"] = round(math.degrees(math.acos(
+        min(1.0, abs(float(up_cam @ floor.normal_camera))))), 2)
+
+    def to_upright(p_cam: np.ndarray) -> np.ndarray:
+        p = np.atleast_2d(p_cam)
+        return np.column_stack([p[:, 0], p[:, 2], -p[:, 1]]) @ rtilt.T
+
+    dets = []
+    for d in result.detections:
+        centre = to_upright(_floor_to_camera(floor, np.array([d.x, d.y, d.height_m / 2])))[0]
+        yaw = None
+        if d.facing is not None:
+            tip = np.array([d.x + math.cos(d.facing), d.y + math.sin(d.facing), d.height_m / 2])
+            v = to_upright(_floor_to_camera(floor, tip))[0] - centre
+            yaw = math.atan2(v[1], v[0])
+        dets.append((d, centre, yaw))
+    matches = []
+    for obj in data["objects"]:
+        wanted = SUN_CATEGORY.get(obj["sun_class"])
+        if wanted is None:
+            continue
+        gt = np.asarray(obj["center_upright_m"][:2])
+        best = min(dets, key=lambda t: np.linalg.norm(t[1][:2] - gt), default=None)
+        row = {"object": obj["sun_class"], "expected": wanted,
+               "pixels": obj["n_valid_depth_pixels_inside_box"],
+               "hard": obj["n_valid_depth_pixels_inside_box"] < 2000}
+        if best is not None and np.linalg.norm(best[1][:2] - gt) < 1.0:
+            d, centre, yaw = best
+            row.update({"detected": d.category, "correct": d.category == wanted,
+                        "position_error_m": round(float(np.linalg.norm(centre[:2] - gt)), 3)})
+            if yaw is not None and wanted == "bed":
+                err = abs((yaw - obj["yaw_upright_rad"] + math.pi) % (2 * math.pi) - math.pi)
+                row["orientation_error_deg"] = round(math.degrees(err), 1)
+        else:
+            row.update({"detected": None, "correct": False})
+        matches.append(row)
+    score["matches"] = matches
+    return score
+
+
+def _score_boxes(base: Path, result, frame) -> dict:
+    """Each labelled 2D box gets the category of the detection whose centre projects into it."""
+    data = json.loads((base / "annotations_visual.json").read_text())
+    k = frame.intrinsics
+    floor = result.floor
+    projected = []
+    if floor is not None:
+        for d in result.detections:
+            p = _floor_to_camera(floor, np.array([d.x, d.y, d.height_m / 2]))[0]
+            if p[2] > 0.1:
+                projected.append((d, k.fx * p[0] / p[2] + k.cx, k.fy * p[1] / p[2] + k.cy))
+    rows = []
+    for obj in data["objects"]:
+        x0, y0, x1, y1 = obj["bbox2d"]
+        inside = [d for d, u, v in projected if x0 <= u <= x1 and y0 <= v <= y1]
+        expected = obj["category"].replace("_", " ")
+        rows.append({"object": obj["category"], "detected": [d.category for d in inside],
+                     "correct": any(d.category == expected for d in inside)})
+    return {"boxes": rows}

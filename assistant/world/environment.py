@@ -1,0 +1,204 @@
+"""The environment model: the robot's one picture of the home (dissertation 3.5, 5.4.1).
+
+Long-term entities (rooms, walls, doors) come from the world file's floor plan — the robot is
+told the layout. Short-term entities (furniture) come from perception: every frame's detections
+are fused into *tracks*, matched by footprint overlap on the world grid. A track keeps, per
+grid cell, how often it was seen there; a category vote weighted by confidence; a
+confidence-weighted circular mean of its orientation. A track the robot looks straight at
+(its cells in view) without seeing it loses support and is dropped once it has been missed more
+often than seen: furniture moved without telling the robot disappears from the model. A track's
+position (attributes ``x``, ``y``) is the confidence-weighted mean of the detector's centre
+estimates, which are better than the centroid of the cells seen from one side.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from assistant.geometry import GridMap, Pose2D
+from assistant.world.entities import floorplan_entities, world_grid
+from assistant.world.entity import Entity, EntityKind
+from assistant.world.model import World
+
+
+@dataclass
+class _Track:
+    id: str
+    hits: dict = field(default_factory=lambda: defaultdict(float))  # (iy, ix) → weight
+    votes: dict = field(default_factory=lambda: defaultdict(float))  # category → confidence sum
+    sin: float = 0.0
+    cos: float = 0.0
+    seen: int = 0
+    missed: int = 0
+    confidence: float = 0.0
+    subclass: str | None = None
+    position: list = field(default_factory=lambda: [0.0, 0.0, 0.0])  # Σw·x, Σw·y, Σw
+
+    def cells(self, share: float) -> np.ndarray:
+        """Cells seen in at least ``share`` of the best cell's weight."""
+        if not self.hits:
+            return np.zeros((0, 2), dtype=int)
+        top = max(self.hits.values())
+        return np.array(sorted(c for c, w in self.hits.items() if w >= share * top), dtype=int)
+
+    @property
+    def category(self) -> str:
+        return max(self.votes.items(), key=lambda kv: kv[1])[0]
+
+    @property
+    def orientation(self) -> float | None:
+        if self.sin == 0.0 and self.cos == 0.0:
+            return None
+        return math.atan2(self.sin, self.cos)
+
+
+class EnvironmentModel:
+    """Entities of one home, kept up to date from perception.
+
+    ``update(entities, robot_pose)`` fuses one frame's short-term entities (e.g. from
+    :meth:`FurnitureDetector.detect`): each is matched to the track whose footprint it overlaps
+    most (intersection over the smaller footprint ≥ ``match_overlap``, or centres nearer than
+    ``match_distance_m``), else starts a new track. ``entities()`` gives the long-term entities
+    followed by the furniture, named by category word (``table``, ``chair``…), with ids in
+    order of first detection.
+    """
+
+    def __init__(self, world: World, resolution_m: float = 0.1, match_overlap: float = 0.25,
+                 match_distance_m: float = 0.45, cell_share: float = 0.3,
+                 view_range_m: float = 4.0, view_half_fov_rad: float = math.radians(26.0)):
+        self.world = world
+        self.grid: GridMap = world_grid(world, resolution_m)
+        self.long_term: list[Entity] = floorplan_entities(world, self.grid)
+        self.match_overlap = match_overlap
+        self.match_distance_m = match_distance_m
+        self.cell_share = cell_share
+        self.view_range_m = view_range_m
+        self.view_half_fov_rad = view_half_fov_rad
+        self._tracks: list[_Track] = []
+        self._next = 0
+        self.frames = 0
+
+    # ------------------------------------------------------------------ updating
+    def update(self, detections: list[Entity], robot_pose: Pose2D | None = None) -> list[Entity]:
+        """Fuse one frame's detections; with ``robot_pose``, tracks in view but not detected
+        lose support. Returns the current furniture entities."""
+        self.frames += 1
+        matched: set[str] = set()
+        for det in detections:
+            cells = self._cells_of(det)
+            if len(cells) == 0:
+                continue
+            track = self._match(cells)
+            if track is None:
+                track = _Track(f"furniture:{self._next}")
+                self._next += 1
+                self._tracks.append(track)
+            self._absorb(track, det, cells)
+            matched.add(track.id)
+        if robot_pose is not None:
+            for track in list(self._tracks):
+                if track.id in matched:
+                    continue
+                if self._in_view(track, robot_pose):
+                    track.missed += 1
+                    if track.missed > track.seen:
+                        self._tracks.remove(track)
+        return self.furniture()
+
+    def _cells_of(self, det: Entity) -> np.ndarray:
+        """The detection's cells on this model's grid (re-gridded if it came on another)."""
+        if det.grid == self.grid:
+            cells = det.cells
+        else:
+            cells = self.grid.world_to_cell(det.points_m())
+        cells = np.asarray(cells, dtype=int).reshape(-1, 2)
+        cells = cells[self.grid.contains_cells(cells)]
+        return np.unique(cells, axis=0) if len(cells) else cells
+
+    def _match(self, cells: np.ndarray) -> _Track | None:
+        best, best_score = None, 0.0
+        keys = {tuple(c) for c in cells}
+        centre = self.grid.cell_to_world(cells).mean(axis=0)
+        for track in self._tracks:
+            tc = track.cells(self.cell_share)
+            if len(tc) == 0:
+                continue
+            inter = len(keys & {tuple(c) for c in tc})
+            score = inter / min(len(keys), len(tc))
+            dist = float(np.linalg.norm(self.grid.cell_to_world(tc).mean(axis=0) - centre))
+            if score < self.match_overlap and dist < self.match_distance_m:
+                score = self.match_overlap  # small items seen from two sides barely overlap
+            if score >= self.match_overlap and score > best_score:
+                best, best_score = track, score
+        return best
+
+    def _absorb(self, track: _Track, det: Entity, cells: np.ndarray) -> None:
+        w = max(float(det.confidence), 0.05)
+        for c in cells:
+            track.hits[(int(c[0]), int(c[1]))] += w
+        track.votes[det.category or det.name] += w
+        if det.orientation_rad is not None:
+            track.sin += w * math.sin(det.orientation_rad)
+            track.cos += w * math.cos(det.orientation_rad)
+        track.seen += 1
+        track.missed = max(0, track.missed - 1)
+        track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
+        track.subclass = det.attributes.get("subclass", track.subclass)
+        if "x" in det.attributes and "y" in det.attributes:  # the detector's centre estimate
+            track.position[0] += w * float(det.attributes["x"])
+            track.position[1] += w * float(det.attributes["y"])
+            track.position[2] += w
+
+    def _in_view(self, track: _Track, pose: Pose2D) -> bool:
+        """Whether the track's centre lies well inside the camera's field of view and range."""
+        cells = track.cells(self.cell_share)
+        if len(cells) == 0:
+            return False
+        local = pose.to_local(self.grid.cell_to_world(cells).mean(axis=0)[None])[0]
+        dist = math.hypot(*local)
+        bearing = abs(math.atan2(local[1], local[0]))
+        return 1.0 < dist < self.view_range_m - 0.5 and bearing < self.view_half_fov_rad * 0.8
+
+    # ------------------------------------------------------------------ reading
+    def furniture(self) -> list[Entity]:
+        """The furniture tracks as short-term entities."""
+        from assistant.world.catalogue import category_word
+
+        out = []
+        for track in self._tracks:
+            cells = track.cells(self.cell_share)
+            if len(cells) == 0:
+                continue
+            category = track.category
+            has_front = category in ("chair", "couch", "bed")
+            room = self.world.floorplan.room_at(*self.grid.cell_to_world(cells).mean(axis=0))
+            out.append(Entity(track.id, category_word(category), EntityKind.SHORT_TERM, self.grid,
+                              cells, track.orientation if has_front else None, category=category,
+                              room=room.name if room else None, confidence=track.confidence,
+                              attributes=self._attributes(track)))
+        return out
+
+    @staticmethod
+    def _attributes(track: _Track) -> dict:
+        out = {"seen": track.seen, "subclass": track.subclass}
+        if track.position[2] > 0:
+            out["x"] = track.position[0] / track.position[2]
+            out["y"] = track.position[1] / track.position[2]
+        return out
+
+    def entities(self, robot_pose: Pose2D | None = None) -> list[Entity]:
+        """Long-term entities, then furniture, then (with a pose) the current robot."""
+        out = list(self.long_term) + self.furniture()
+        if robot_pose is not None:
+            out.append(Entity.robot(robot_pose, self.grid))
+        return out
+
+    def clear(self) -> None:
+        """Forget every perceived entity (the floor plan stays)."""
+        self._tracks.clear()
+        self._next = 0
+        self.frames = 0

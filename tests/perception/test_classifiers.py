@@ -1,0 +1,58 @@
+import numpy as np
+import pytest
+from sklearn.exceptions import NotFittedError
+
+from assistant.perception.classifiers import (
+    AutoencoderClassifier,
+    FurnitureClassifier,
+    category_of,
+    view_subclasses,
+)
+
+
+def toy(seed=0, n=30):
+    rng = np.random.default_rng(seed)
+    X = np.vstack([rng.normal(0, 1, (n, 848)), rng.normal(3, 1, (n, 848))])
+    y = np.array(["chair+front"] * n + ["small table"] * n)
+    return X, y
+
+
+def test_subclasses_are_named_by_the_side_seen():
+    rng = np.random.default_rng(1)
+    X = np.vstack([rng.normal(0, 0.1, (20, 5)), rng.normal(5, 0.1, (20, 5)), rng.normal(0, 1, (10, 5))])
+    category = np.array(["chair"] * 40 + ["small table"] * 10)
+    alpha = np.concatenate([rng.normal(0, 0.2, 20), rng.normal(np.pi, 0.2, 20), np.full(10, np.nan)])
+    sub = view_subclasses(X, category, alpha)
+    assert set(sub[:20]) == {"chair+front"} and set(sub[20:40]) == {"chair+back"}
+    assert set(sub[40:]) == {"small table"}
+    assert category_of("couch+side") == "couch" and category_of("small table") == "small table"
+
+
+@pytest.mark.parametrize("method", ["lsvm", "gsvm"])
+def test_svm_classifiers_follow_the_estimator_contract(method):
+    X, y = toy()
+    clf = FurnitureClassifier(method)
+    with pytest.raises(NotFittedError):
+        clf.predict(X)
+    assert clf.fit(X, y) is clf
+    assert (clf.predict(X) == y).mean() > 0.95
+    sub, conf = clf.predict_with_confidence(X[:3])
+    assert np.all((conf > 0) & (conf <= 1))
+    assert set(clf.predict_category(X)) <= {"chair", "small table"}
+
+
+def test_autoencoder_pretrains_then_classifies():
+    X, y = toy(n=20)
+    ae = AutoencoderClassifier(encoder=(32, 16, 8), pretrain_iter=20, finetune_iter=50)
+    with pytest.raises(NotFittedError):
+        ae.predict(X)
+    ae.fit(X, y)
+    assert ae.autoencoder_loss_ > 0
+    assert (ae.predict(X) == y).mean() > 0.9
+    assert ae.predict_proba(X).shape == (40, 2)
+
+
+def test_feature_choice_is_checked():
+    X, y = toy(n=5)
+    with pytest.raises(ValueError):
+        FurnitureClassifier("gsvm", features="colour").fit(X, y)

@@ -1,0 +1,62 @@
+import math
+
+import numpy as np
+import pytest
+
+from assistant.perception.cloud import depth_to_points, find_floor, transform
+from assistant.robot.frames import CameraIntrinsics, CameraMount, camera_to_base_matrix, pixel_rays
+
+K = CameraIntrinsics(160, 120, 131.25, 131.25, 79.75, 59.75)  # a quarter-size Kinect
+
+
+def floor_depth(height: float, tilt_deg: float, roll_deg: float = 0.0) -> np.ndarray:
+    """Exact depth of an endless floor seen by a camera ``height`` m up, pitched and rolled."""
+    rays = pixel_rays(K).reshape(-1, 3).astype(float)
+    t, r = math.radians(tilt_deg), math.radians(roll_deg)
+    up = np.array([math.sin(r) * math.cos(t), -math.cos(r) * math.cos(t), -math.sin(t)])
+    denom = rays @ up
+    with np.errstate(divide="ignore"):
+        depth = np.where(denom < -1e-6, height / -denom, 0.0)  # n·(d·ray) + h = 0
+    depth[depth > 8] = 0.0
+    return depth.reshape(K.height, K.width).astype(np.float32)
+
+
+def test_floor_from_the_mount_prediction():
+    depth = floor_depth(1.05, 15.0)
+    pts, rows = depth_to_points(depth, K, stride=1)
+    floor = find_floor(pts, CameraMount(1.05, math.radians(15.0)))
+    assert floor is not None
+    assert floor.height_m == pytest.approx(1.05, abs=0.01)
+    assert math.degrees(floor.tilt_rad) == pytest.approx(15.0, abs=0.5)
+    levelled = transform(pts, floor.camera_to_floor)
+    assert np.abs(levelled[:, 2]).max() < 0.02
+
+
+def test_rolled_camera_without_a_mount_is_searched_for():
+    depth = floor_depth(1.25, 8.0, roll_deg=11.0)
+    pts, _ = depth_to_points(depth, K, stride=1)
+    floor = find_floor(pts, None)
+    assert floor is not None
+    assert floor.height_m == pytest.approx(1.25, abs=0.03)
+    assert math.degrees(floor.roll_rad) == pytest.approx(11.0, abs=1.0)
+    assert math.degrees(floor.tilt_rad) == pytest.approx(8.0, abs=1.0)
+
+
+def test_a_wrong_mount_guess_still_finds_the_floor():
+    depth = floor_depth(1.4, 12.0)
+    pts, _ = depth_to_points(depth, K, stride=1)
+    floor = find_floor(pts, CameraMount(1.05, math.radians(15.0)))
+    assert floor is not None and floor.height_m == pytest.approx(1.4, abs=0.03)
+
+
+def test_no_floor_in_a_wall():
+    depth = np.full((K.height, K.width), 1.2, dtype=np.float32)  # a wall 1.2 m ahead
+    pts, _ = depth_to_points(depth, K, stride=1)
+    assert find_floor(pts, CameraMount()) is None
+
+
+def test_nominal_transform_is_the_robot_mount():
+    m = camera_to_base_matrix(CameraMount(1.05, math.radians(15.0)))
+    # the optical axis points forward and down by the tilt
+    axis = m[:3, :3] @ np.array([0.0, 0.0, 1.0])
+    assert axis == pytest.approx([math.cos(math.radians(15)), 0.0, -math.sin(math.radians(15))])

@@ -1,0 +1,55 @@
+import math
+
+import numpy as np
+import pytest
+
+from assistant.geometry import Pose2D
+from assistant.perception import FurnitureDetector
+from assistant.perception.database import ItemRenderer, study_items
+from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
+from assistant.world import EntityKind
+
+
+def frame_of(depth):
+    k = CameraIntrinsics.kinect_v1()
+    return DepthFrame(np.asarray(depth, dtype=np.float32), k, CameraMount(), Pose2D(0, 0, 0))
+
+
+@pytest.mark.parametrize("what, depth", [
+    ("zeros", np.zeros((480, 640))),
+    ("nan", np.full((480, 640), np.nan)),
+    ("wall", np.full((480, 640), 0.9)),
+    ("inf", np.full((480, 640), np.inf)),
+])
+def test_bad_frames_give_reasons_not_exceptions(tiny_models, what, depth):
+    result = FurnitureDetector(tiny_models).analyse(frame_of(depth))
+    assert result.detections == []
+    assert result.reason
+    assert result.to_dict()["detections"] == []
+
+
+def test_a_chair_is_detected_where_it_stands(tiny_models):
+    item = next(i for i in study_items() if i.name == "wood chair")
+    renderer = ItemRenderer(item.mesh(), intrinsics=CameraIntrinsics.kinect_v1())
+    facing = 2.5  # turned towards the robot, a little to the side
+    pose = Pose2D(2.2, 0.3, facing - item.front_offset_rad)
+    robot = Pose2D(1.0, -2.0, 0.5)
+    frame = renderer.render(pose, seed=3)
+    frame = DepthFrame(frame.depth_m, frame.intrinsics, frame.mount, robot)
+    result = FurnitureDetector(tiny_models).analyse(frame)
+    assert result.floor is not None and result.floor.height_m == pytest.approx(1.05, abs=0.02)
+    chairs = [d for d in result.detections if d.category == "chair"]
+    assert len(chairs) == 1
+    expected = robot.transform_points(pose.xy[None])[0]
+    assert math.hypot(chairs[0].x - expected[0], chairs[0].y - expected[1]) < 0.15
+    assert abs((chairs[0].facing - (facing + robot.theta) + math.pi) % (2 * math.pi) - math.pi) < math.radians(8)
+    entities = FurnitureDetector(tiny_models).detect(frame)
+    assert entities[0].kind is EntityKind.SHORT_TERM and entities[0].name == "chair"
+    assert entities[0].orientation_rad is not None
+
+
+def test_unknown_orientation_method_is_named(tiny_models):
+    from assistant.errors import UnknownNameError
+
+    with pytest.raises(UnknownNameError, match="plane"):
+        FurnitureDetector(tiny_models, orientation="compass")

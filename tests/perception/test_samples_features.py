@@ -1,0 +1,88 @@
+import math
+
+import numpy as np
+import pytest
+
+from assistant.perception.features import (
+    FeatureParams,
+    estimate_normals,
+    normal_histogram,
+    orientation_features,
+    shape_descriptor,
+)
+from assistant.perception.samples import SampleParams, extract_samples
+
+
+def box_points(cx, cy, sx, sy, z0, z1, step=0.02):
+    """Points on the top and the four sides of a box (floor frame, metres)."""
+    xs = np.arange(cx - sx / 2, cx + sx / 2 + 1e-9, step)
+    ys = np.arange(cy - sy / 2, cy + sy / 2 + 1e-9, step)
+    zs = np.arange(z0, z1 + 1e-9, step)
+    top = np.array([(x, y, z1) for x in xs for y in ys])
+    sides = [np.array([(x, y, z) for x in xs for z in zs]) for y in (ys[0], ys[-1])]
+    sides += [np.array([(x, y, z) for y in ys for z in zs]) for x in (xs[0], xs[-1])]
+    return np.vstack([top, *sides])
+
+
+def test_two_boxes_make_two_samples_and_clutter_is_dropped():
+    table = box_points(2.0, 0.5, 0.8, 0.8, 0.0, 0.5)
+    couch = box_points(3.0, -1.5, 0.8, 2.0, 0.0, 0.9)
+    clutter = box_points(1.0, 2.0, 0.15, 0.15, 0.0, 0.2)
+    floor = np.array([(x, y, 0.0) for x in np.arange(0.5, 4, 0.1) for y in np.arange(-3, 3, 0.1)])
+    samples, stats = extract_samples(np.vstack([table, couch, clutter, floor]))
+    assert len(samples) == 2
+    centres = sorted(tuple(s.footprint_centre_xy) for s in samples)
+    assert centres[0] == pytest.approx((2.0, 0.5), abs=0.1)
+    assert centres[1] == pytest.approx((3.0, -1.5), abs=0.11)
+    assert stats["dropped_small"] == 1
+    heights = sorted(s.height_m for s in samples)
+    assert heights == pytest.approx([0.5, 0.9], abs=0.02)
+
+
+def test_walls_and_tall_things_are_not_samples():
+    wall = np.array([(3.0, y, z) for y in np.arange(-2, 2, 0.02) for z in np.arange(0.0, 1.6, 0.02)])
+    wardrobe = box_points(2.0, 2.0, 0.6, 0.6, 0.0, 2.2)
+    samples, stats = extract_samples(np.vstack([wall, wardrobe]))
+    assert samples == []
+    assert stats["dropped_wall"] == 1 and stats["cleared_cells"] > 0  # the wardrobe column is cleared
+
+
+def test_columns_running_out_of_the_top_of_the_view_are_cleared():
+    couch = box_points(3.0, 0.0, 0.8, 2.0, 0.0, 0.9)
+    wall = np.array([(3.5, y, z) for y in np.arange(-2, 2, 0.02) for z in np.arange(0.0, 1.4, 0.02)])
+    pts = np.vstack([couch, wall])
+    rows = np.where(pts[:, 2] > 1.35, 0.0, 100.0)  # the wall's top is at the top of the image
+    samples, stats = extract_samples(pts, rows, image_height=240)
+    assert len(samples) == 1 and stats["cleared_cells"] > 0
+    assert samples[0].footprint_centre_xy == pytest.approx([3.0, 0.0], abs=0.1)
+
+
+def test_normal_histogram_of_a_table_top():
+    params = FeatureParams()
+    top = np.array([(x, y, 0.72) for x in np.arange(-0.4, 0.4, 0.03) for y in np.arange(-0.4, 0.4, 0.03)])
+    normals = estimate_normals(top, np.array([-2.0, 0.0, 1.0]), params)
+    assert np.all(normals[:, 2] > 0.95)  # up, towards the camera
+    h = normal_histogram(top, normals, params).reshape(params.shape)
+    assert h.size == 800
+    filled = h >= 0
+    assert set(np.nonzero(filled)[1]) == {14}  # 0.72 m → height bin 14
+    assert np.all(h[filled] > 0.9)  # horizontal surface: v_p near 1 (equation 3-1)
+    assert np.all(h[~filled] == -1)
+
+
+def test_orientation_features_point_to_the_camera():
+    params = FeatureParams()
+    back = np.array([(2.0, y, z) for y in np.arange(-0.3, 0.3, 0.02) for z in np.arange(0.45, 0.9, 0.02)])
+    normals = estimate_normals(back, np.array([0.0, 0.0, 1.0]), params)
+    q = orientation_features(back, normals, params)
+    assert np.nanmax(np.abs(np.abs(q[np.isfinite(q)]) - math.pi)) < 0.1  # facing −x, the camera
+
+
+def test_shape_descriptor_sees_a_couch_back_along_its_long_side():
+    couch = box_points(0.0, 0.0, 0.8, 2.0, 0.0, 0.45)
+    back = box_points(-0.3, 0.0, 0.2, 2.0, 0.0, 0.9)
+    pts = np.vstack([couch, back])
+    normals = estimate_normals(pts, np.array([3.0, 0.0, 1.0]))
+    s = shape_descriptor(pts, normals)
+    assert s[40] == pytest.approx(0.9, abs=0.03)  # top height
+    assert s[44] > 1.8 and s[45] < 0.8  # tall part ~2 m long, item < 0.8 m deep across it
