@@ -1,0 +1,112 @@
+"""All RDT policy models, trained from the demonstration files and cached.
+
+``PolicyLibrary(directory)`` groups the demonstrations under ``directory`` by RDT, trains one
+:class:`PolicyModel` per RDT and caches the trained models under
+``cache_dir()/policy/<hash>.pkl``, the hash covering every demonstration file's bytes, the
+model parameters and the model code. An RDT with no demonstrations falls back to a trained
+model with the same direction and the same kind of reference (robot, furniture, room, wall),
+then one with the same direction, then one with the same kind of reference; ties go to the
+RDT earlier in Table 5-1. ``model(rdt)`` says which model it used.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import pickle
+from dataclasses import dataclass
+from pathlib import Path
+
+from assistant.errors import UnknownNameError
+from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.policy.demonstration import load_demonstrations
+from assistant.policy.model import PolicyModel
+from assistant.policy.rdt import RDT, TABLE_RDTS, parse_rdt
+
+DEFAULT_DIRECTORY = Path(__file__).resolve().parents[2] / "corpus" / "demonstrations"
+_CODE_FILES = ("model.py", "demonstration.py", "rdt.py")
+
+
+@dataclass(frozen=True)
+class ModelChoice:
+    """The model used for a requested RDT: ``rdt`` asked for, ``used`` the model's RDT."""
+
+    model: PolicyModel
+    rdt: str
+    used: str
+
+    @property
+    def fallback(self) -> bool:
+        return self.rdt != self.used
+
+
+class PolicyLibrary:
+    """Policy models of every demonstrated RDT (``directory``: demonstration files)."""
+
+    def __init__(self, directory: str | Path | None = None, use_cache: bool = True, **model_params):
+        self.directory = Path(directory) if directory is not None else DEFAULT_DIRECTORY
+        self.use_cache = use_cache
+        self.model_params = model_params
+        self._models: dict[str, PolicyModel] | None = None
+        self.cache_path: Path | None = None
+        self.loaded_from_cache = False
+
+    def _key(self) -> str:
+        h = hashlib.sha256()
+        for path in sorted(self.directory.rglob("*.json")):
+            h.update(str(path.relative_to(self.directory)).encode())
+            h.update(path.read_bytes())
+        h.update(repr(sorted(self.model_params.items())).encode())
+        here = Path(__file__).resolve().parent
+        for name in _CODE_FILES:
+            h.update((here / name).read_bytes())
+        return h.hexdigest()[:24]
+
+    @property
+    def models(self) -> dict[str, PolicyModel]:
+        if self._models is None:
+            self._models = self._load_or_train()
+        return self._models
+
+    def _load_or_train(self) -> dict[str, PolicyModel]:
+        if not self.directory.is_dir():
+            raise UnknownNameError("demonstration directory", str(self.directory), [str(DEFAULT_DIRECTORY)])
+        if self.use_cache:
+            self.cache_path = cache_dir() / "policy" / f"{self._key()}.pkl"
+            if self.cache_path.is_file():
+                try:
+                    with open(self.cache_path, "rb") as handle:
+                        models = pickle.load(handle)
+                    self.loaded_from_cache = True
+                    return models
+                except Exception:  # a stale or broken cache file: retrain
+                    pass
+        demos = load_demonstrations(self.directory)
+        by_rdt: dict[str, list] = {}
+        for demo in demos:
+            by_rdt.setdefault(demo.rdt, []).append(demo)
+        models = {rdt: PolicyModel(rdt, **self.model_params).fit(group) for rdt, group in sorted(by_rdt.items())}
+        if self.use_cache and self.cache_path is not None:
+            atomic_write_bytes(self.cache_path, pickle.dumps(models))
+        return models
+
+    def rdts(self) -> list[str]:
+        return sorted(self.models)
+
+    def model(self, rdt: str | RDT) -> ModelChoice:
+        """The model of ``rdt``, or the nearest one (see the module docstring)."""
+        want = parse_rdt(rdt)
+        models = self.models
+        if want.name in models:
+            return ModelChoice(models[want.name], want.name, want.name)
+        order = {name: i for i, name in enumerate(TABLE_RDTS)}
+        known = sorted(models, key=lambda n: (order.get(n, len(order)), n))
+        tests = (lambda r: r.direction == want.direction and r.reference_kind == want.reference_kind
+                 and r.has_target == want.has_target,
+                 lambda r: r.direction == want.direction and r.reference_kind == want.reference_kind,
+                 lambda r: r.direction == want.direction,
+                 lambda r: r.reference_kind == want.reference_kind and r.has_target == want.has_target)
+        for test in tests:
+            for name in known:
+                if test(RDT.parse(name)):
+                    return ModelChoice(models[name], want.name, name)
+        raise UnknownNameError("RDT (no policy model and no model to fall back to)", want.name, known)
