@@ -9,7 +9,7 @@ STAMP := $(VENV)/.installed
 .PHONY: run test setup system-packages bench clean
 
 run: setup
-	$(VENV)/bin/assistant world apartment --view
+	$(VENV)/bin/assistant chat --world apartment
 
 test: setup
 	$(PY) -m pytest -q

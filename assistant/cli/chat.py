@@ -1,0 +1,41 @@
+"""``assistant chat --world NAME``: talk to the robot in a terminal.
+
+A read–eval–print loop over :class:`~assistant.dialogue.DialogueManager`: line editing and
+history (stdlib ``readline``; history in the data folder), a transcript of every turn saved
+atomically after each one, the robot's progress printed as it acts. Ctrl-C stops the robot, a
+second Ctrl-C in a row leaves; the end of input (Ctrl-D) leaves cleanly. The models load in a
+background thread, so the prompt appears at once.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+PROMPT = "you> "
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "chat", help="talk to the robot: fetch, where is my X, teach, stop",
+        description="A conversation with the robot in a terminal. Ask it to fetch things, where "
+                    "something is, how to get to it, or to learn a place; say 'help' inside.")
+    parser.add_argument("--world", default="apartment", help="world name or file (default: apartment)")
+    parser.add_argument("--scene", default="original", help="scene: original or modified")
+    parser.add_argument("--robot", choices=("sim",), default="sim",
+                        help="which robot acts: the simulator (the only one so far)")
+    parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
+                        help="sensed: furniture detector on depth frames (default); oracle: the world "
+                             "file's furniture")
+    parser.add_argument("--view", action="store_true", help="show the robot acting in the 3D view (meshcat)")
+    parser.add_argument("--memory", metavar="FILE",
+                        help="object memory file (default: DATA/memory.json; DATA is $ASSISTANT_DATA or "
+                             "~/.local/share/assistant)")
+    parser.add_argument("--transcripts", metavar="DIR", help="where transcripts go (default: DATA/transcripts)")
+    parser.add_argument("--seed", type=int, default=0, help="simulator seed")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from assistant.dialogue.repl import ChatSession
+
+    return ChatSession(args).loop()

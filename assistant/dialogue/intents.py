@@ -1,0 +1,96 @@
+"""Deterministic intent rules: which kind of turn an utterance is, before any parsing.
+
+Control phrases, questions and teaching are recognised by small regular expressions on the
+normalised text (lower case, punctuation removed). Everything else is handed to the grounding
+parser by the manager: a plan with nodes, a room or an object is a fetch command.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+#: intent name → patterns (searched in the normalised utterance), in priority order
+RULES: list[tuple[str, tuple[str, ...]]] = [
+    ("stop", (r"^(please )?(stop|halt|freeze|wait|hold on|stay)( (it|now|there|right now|please|moving|that))*$",
+              r"^(stop|halt) (it|now|please)\b")),
+    ("cancel", (r"^(please )?(cancel|never ?mind|forget (it|that|about it)|abort|no never ?mind)\b",
+                r"^(no )?(it doesnt|it does not) matter\b")),
+    ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
+                r"^(pardon|sorry what|what|huh|repeat)$")),
+    ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bhow do(es)? (this|you) work\b",
+              r"\bwhat do you (understand|know how to do)\b", r"^(commands|options)$")),
+    ("which_home", (r"\b(which|what) (home|house|world|flat|apartment|place) (am i|are we|is this)\b",
+                    r"\bwhere am i\b", r"\bwhere are we\b", r"\bwhich rooms\b", r"\bwhat rooms\b")),
+    ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
+    ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
+               r"\blearn what\b")),
+    ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
+                       r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
+    ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bhave you seen\b",
+               r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b")),
+    ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
+             r"yes please|go and check|check|sure thing)$",)),
+    ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",)),
+    ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",)),
+    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",)),
+    ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),
+]
+
+_COMPILED = [(name, tuple(re.compile(p) for p in patterns)) for name, patterns in RULES]
+
+
+def normalise(text: str) -> str:
+    """Lower case, apostrophes dropped ("where's" → "wheres"), other punctuation to spaces."""
+    t = (text or "").lower().replace("’", "'").replace("'", "")
+    t = re.sub(r"[^a-z0-9? ]+", " ", t)
+    t = re.sub(r"\s*\?\s*", " ", t) if t.strip() != "?" else "?"
+    return " ".join(t.split())
+
+
+@dataclass(frozen=True)
+class Intent:
+    name: str  # a RULES name, or "command" (for the parser) or "empty"
+    text: str  # the normalised utterance
+
+
+def classify(text: str) -> Intent:
+    """The first rule that matches; ``command`` when none does (the parser decides)."""
+    norm = normalise(text)
+    if not norm:
+        return Intent("empty", norm)
+    for name, patterns in _COMPILED:
+        if any(p.search(norm) for p in patterns):
+            return Intent(name, norm)
+    return Intent("command", norm)
+
+
+ORDINALS = {"first": 0, "1st": 0, "one": 0, "1": 0, "second": 1, "2nd": 1, "two": 1, "2": 1,
+            "third": 2, "3rd": 2, "three": 2, "3": 2, "fourth": 3, "4th": 3, "four": 3, "4": 3,
+            "last": -1, "final": -1}
+
+
+def ordinal_choice(norm: str) -> int | None:
+    """Index picked by "the second", "the first one", "number 2", "the last"; None if none."""
+    words = norm.split()
+    if len(words) > 5:
+        return None
+    for w in words:
+        if w in ORDINALS and w not in ("one",):
+            return ORDINALS[w]
+    if words in (["one"], ["the", "one"]):
+        return None
+    return None
+
+
+TEACH_PHRASE = re.compile(r"""['"‘“]([^'"’”]+)['"’”]""")
+
+
+def teach_phrase(text: str) -> str | None:
+    """The phrase to be taught: quoted, or what follows "what"/"how to go" up to "means"."""
+    m = TEACH_PHRASE.search(text or "")
+    if m:
+        return m.group(1).strip()
+    norm = normalise(text)
+    m = re.search(r"\b(?:what|where) (.+?) (?:means|is)\b", norm) or re.search(r"\bshow you (?:how to go )?(.+)$", norm)
+    return m.group(1).strip() if m else None

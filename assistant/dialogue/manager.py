@@ -1,0 +1,597 @@
+"""The dialogue manager: one utterance in, one :class:`Turn` out.
+
+Routing (deterministic, see :mod:`assistant.dialogue.intents`): control phrases (stop, cancel,
+repeat, help, which home, start over) are answered at once; "where is my X" / "have you seen
+my X" answers from the object memory first and otherwise from the generation layer (static
+description), "how do I get to my X" with the dynamic description; "let me show you what
+'in front of the couch' means" names the RDT node to record a demonstration of; everything else
+goes to the grounding parser, and a plan with nodes, a room or an object is a fetch command.
+
+A fetch runs in a worker thread (the simulator takes seconds); :meth:`DialogueManager.handle`
+returns at once with "Going to the bedroom." and the worker reports progress through the
+``say`` callback and ends with a final :class:`Turn` (:meth:`DialogueManager.wait`). "stop"
+sets a flag that the fetch's progress callback turns into :class:`Interrupted`.
+
+When the plan is ambiguous (several tables in the room, no reference to pick one) or
+incomplete (no room), the manager asks instead of guessing and understands the answer in
+context ("the one with the chairs", "the second", "never mind"). Unknown words are named back.
+"""
+
+from __future__ import annotations
+
+import re
+import threading
+import time
+from dataclasses import dataclass, field
+
+from assistant.dialogue.clarify import FURNITURE_CHOICES, article, choose_option, progress_sentence
+from assistant.dialogue.intents import classify, teach_phrase
+from assistant.dialogue.memory import ObjectMemory
+from assistant.dialogue.services import Interrupted, Services, furniture_phrase
+
+NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
+HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
+             "in the living room\"), ask where something is (\"where is my mug?\", \"have you seen my "
+             "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
+             "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
+             "\"repeat that\", \"which home am I in\" or \"start over\".")
+
+
+@dataclass
+class Turn:
+    """One exchange: what was said, the intent, the robot's reply, what it did and how it ended.
+
+    ``action``: ``answer``, ``describe``, ``fetch``, ``clarify``, ``teach``, ``stop``, ``none``;
+    ``outcome``: ``answered``, ``asked``, ``started``, ``success``, ``failed``, ``stopped``,
+    ``cancelled``, ``not_understood``, ``busy``; ``seconds``: time to the reply (wall clock).
+    """
+
+    text: str
+    intent: str
+    reply: str
+    action: str = "none"
+    outcome: str = "answered"
+    data: dict = field(default_factory=dict)
+    seconds: float = 0.0
+    final: bool = True  # False for a started fetch: a final Turn follows from the worker
+
+    def to_dict(self) -> dict:
+        return {"text": self.text, "intent": self.intent, "reply": self.reply, "action": self.action,
+                "outcome": self.outcome, "data": self.data, "seconds": round(self.seconds, 4)}
+
+
+def _join(words: list[str], last: str = "and") -> str:
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {last} " + words[-1]
+
+
+class DialogueManager:
+    """Conversation state for one person and one home.
+
+    ``world``: a world name or :class:`~assistant.world.World`; ``services``: shared
+    :class:`Services`; ``memory``: an :class:`ObjectMemory`; ``say``: called with each progress
+    sentence of a running fetch (from the worker thread); ``on_event``: also receives the
+    executor's raw events (the 3D view draws them).
+    """
+
+    def __init__(self, world="apartment", scene: str = "original", services: Services | None = None,
+                 memory: ObjectMemory | None = None, say=None, on_event=None, on_finish=None, on_pose=None):
+        from assistant.world import load_world
+
+        self.world = load_world(world) if isinstance(world, str) else world
+        self.scene = self.world.scene(scene).name
+        self.services = services or Services()
+        self.memory = memory or ObjectMemory(None)
+        self.say = say or (lambda text: None)
+        self.on_event = on_event
+        self.on_finish = on_finish
+        self.on_pose = on_pose
+        self.pending: dict | None = None
+        self.synonyms: dict[str, str] = {}
+        self.last_said = ""
+        self.history: list[Turn] = []
+        self._job: _Job | None = None
+
+    # ------------------------------------------------------------------ helpers
+    @property
+    def rooms(self) -> list[str]:
+        return list(self.world.floorplan.room_names)
+
+    @property
+    def busy(self) -> bool:
+        """A fetch is running and has not been asked to stop."""
+        job = self._job
+        return job is not None and job.thread.is_alive() and not job.stop.is_set()
+
+    def greeting(self) -> str:
+        return (f"Hello! I'm in the {self.world.name} ({_join(['the ' + r for r in self.rooms])}). "
+                "Ask me to fetch something, where something is, or say \"help\" to hear what I can do.")
+
+    def _turn(self, text, intent, reply, action="answer", outcome="answered", start=None, **data) -> Turn:
+        turn = Turn(text, intent, reply, action, outcome, data,
+                    0.0 if start is None else time.perf_counter() - start)
+        if reply:
+            self.last_said = reply
+        self.history.append(turn)
+        return turn
+
+    # ------------------------------------------------------------------ entry point
+    def handle(self, text: str) -> Turn:
+        """Route one utterance; never raises for what a person may say."""
+        start = time.perf_counter()
+        try:
+            return self._handle(text, start)
+        except Exception as error:  # a bug must not end the conversation
+            from assistant.errors import AssistantError
+
+            if isinstance(error, AssistantError):
+                return self._turn(text, "command", f"Sorry — {error}.", "none", "failed", start)
+            return self._turn(text, "error", f"Sorry, something went wrong inside me ({type(error).__name__}: "
+                              f"{error}). Please say it another way.", "none", "failed", start)
+
+    def _handle(self, text: str, start: float) -> Turn:
+        intent = classify(text)
+        name = intent.name
+        if name == "empty":
+            return self._turn(text, name, "", "none", "answered", start)
+        if name == "stop":
+            return self._do_stop(text, start)
+        if name == "cancel":
+            was = self.pending is not None
+            self.pending = None
+            if self.busy:
+                return self._do_stop(text, start, intent_name="cancel")
+            return self._turn(text, name, "OK, never mind." if was else "OK.", "none", "cancelled", start)
+        if name == "repeat":
+            reply = self.last_said or "I haven't said anything yet."
+            turn = Turn(text, name, reply, "answer", "answered", {}, time.perf_counter() - start)
+            self.history.append(turn)
+            return turn
+        if name == "help":
+            return self._turn(text, name, HELP_TEXT, start=start)
+        if name == "which_home":
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(text, name, f"You're in the {self.world.name} ({self.scene} furniture), "
+                              f"with {rooms}.", start=start, world=self.world.name, scene=self.scene)
+        if name == "start_over":
+            self.pending = None
+            self.synonyms.clear()
+            self.stop()
+            return self._turn(text, name, "OK, let's start over. What can I do for you?", "none",
+                              "cancelled", start)
+        if self.pending is not None:
+            turn = self._resolve(text, intent, start)
+            if turn is not None:
+                return turn
+        if name in ("yes", "no"):
+            return self._turn(text, name, "OK." if name == "no" else
+                              "Yes? Tell me what to do — say \"help\" for examples.", start=start)
+        if name == "greet":
+            return self._turn(text, name, "Hello! What can I do for you?", start=start)
+        if name == "thanks":
+            return self._turn(text, name, "You're welcome.", start=start)
+        if name == "rude":
+            return self._turn(text, name, "I'm sorry I'm not being more helpful. Tell me what you need, "
+                              "for example \"bring me the mug from the bedroom\".", start=start)
+        if name in ("where", "where_dynamic"):
+            return self._where(text, intent, start)
+        if name == "teach":
+            return self._teach(text, start)
+        return self._command(text, start)
+
+    # ------------------------------------------------------------------ stop / wait
+    def _do_stop(self, text, start, intent_name="stop") -> Turn:
+        self.pending = None
+        if self.stop():
+            return self._turn(text, intent_name, "Stopping.", "stop", "stopped", start)
+        return self._turn(text, intent_name, "OK — I'm not doing anything right now.", "none", "answered", start)
+
+    def stop(self) -> bool:
+        """Ask a running fetch to stop (Ctrl-C); True when one was running."""
+        if self.busy:
+            self._job.stop.set()
+            return True
+        return False
+
+    @property
+    def fetch_started(self) -> bool:
+        """A fetch was started in this conversation (so :meth:`wait` has one to wait for)."""
+        return self._job is not None
+
+    def wait(self, timeout: float | None = None) -> Turn | None:
+        """Wait for the last fetch to end; its final :class:`Turn` (None if none ran, or it is
+        still running after ``timeout`` seconds). A stopped fetch ends at the robot's next call."""
+        job = self._job
+        if job is None:
+            return None
+        job.thread.join(timeout)
+        return None if job.thread.is_alive() else job.final
+
+    def close(self, timeout: float = 10.0) -> None:
+        """Stop a running fetch and wait for it (end of a conversation)."""
+        if self._job is not None:
+            self._job.stop.set()
+            self._job.thread.join(timeout)
+
+    # ------------------------------------------------------------------ where / how
+    def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
+        """(known object named in the text, or None; the unknown noun asked about, or None)."""
+        known = sorted(_known_objects(self.world), key=len, reverse=True)
+        padded = f" {norm} "
+        for k in known:
+            if f" {k} " in padded or f" {k}s " in padded:
+                return k, None
+        if plan_object:
+            return plan_object, None
+        m = re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+(?: [a-z]+)?)$", norm) or \
+            re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+)\b", norm)
+        if m:
+            noun = re.sub(r"\b(is|are|now|please|again|then|gone)\b", "", m.group(1)).strip()
+            return None, noun or None
+        return None, None
+
+    def _where(self, text: str, intent, start: float) -> Turn:
+        obj, unknown = self._object_in(intent.text)
+        if obj is None:
+            names = _join(sorted(_known_objects(self.world)), "or")
+            if unknown:
+                return self._turn(text, intent.name, f"I don't know what {article(unknown)} {unknown} is, so I "
+                                  f"can't look for it. I can look for: {names}.", "answer", "not_understood",
+                                  start, unknown=unknown)
+            return self._turn(text, intent.name, f"What are you looking for? I know about: {names}.", "clarify",
+                              "asked", start)
+        style = "dynamic" if intent.name == "where_dynamic" else "static"
+        seen = self.memory.recall(self.world.name, obj)
+        if seen is not None and style == "static":
+            place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
+            room = f" in the {seen.room}" if seen.room else ""
+            reply = f"I saw your {obj} {self.memory.age(seen)}{place}{room}. Shall I go and check?"
+            self.pending = {"kind": "confirm", "command": self._fetch_text(obj, seen.phrase, seen.room),
+                            "object": obj}
+            return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
+                              source="memory", memory=seen.to_dict())
+        result = self._describe(obj, style)
+        if not result.found:
+            return self._turn(text, intent.name, result.description, "describe", "answered", start,
+                              object=obj, source="simulator", found=False)
+        description = result.description
+        place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", description.rstrip("."), flags=re.I)
+        if style == "static":
+            self.pending = {"kind": "confirm", "command": f"bring me the {obj} {place}", "object": obj}
+            offer = " Shall I go and get it?"
+        else:
+            offer = ""
+        reply = (f"{description} (I haven't seen it myself yet — that is from the simulator's map of the "
+                 f"home.){offer}")
+        return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
+                          source="simulator", style=style, nodes=list(result.nodes), found=True)
+
+    def _describe(self, obj: str, style: str):
+        """The generation layer's answer, the way ``assistant where`` composes it (oracle search:
+        the object's position comes from the simulator's world file)."""
+        from assistant.generation import not_found_description, oracle_sighting
+
+        sighting = oracle_sighting(self.world, self.scene, obj)
+        if sighting is None:
+            return not_found_description(obj, self.rooms)
+        listener = self.world.start if style == "dynamic" else None
+        from assistant.dialogue.services import _env
+
+        return self.services.describer.describe(sighting, _env(self.world, self.scene), self.world.floorplan,
+                                                listener_pose=listener, style=style)
+
+    # ------------------------------------------------------------------ teaching
+    def _teach(self, text: str, start: float) -> Turn:
+        phrase = teach_phrase(text)
+        if not phrase or phrase in _VAGUE:
+            return self._turn(text, "teach", "What would you like to show me? Say it like: let me show you "
+                              "what 'in front of the couch' means.", "clarify", "asked", start)
+        plan = self.services.parser(self.world).parse(f"go to the table {phrase}").plan
+        rdts = [str(n) for n in plan.nodes if "table" in str(n) or not str(n).endswith("-table")]
+        rdts = [r for r in rdts if r != "room-center-table" or "middle" in phrase or "center" in phrase
+                or "centre" in phrase]
+        if not rdts:
+            return self._turn(text, "teach", f"I can't tell which place '{phrase}' describes — try a phrase "
+                              "like 'in front of the couch' or 'to the left of the bed'.", "none",
+                              "not_understood", start, phrase=phrase)
+        rdt = rdts[0]
+        reply = (f"Please show me '{phrase}' ({rdt}): drive me with the arrow keys or w/a/s/d, "
+                 "q when you're done, Esc to give up.")
+        return self._turn(text, "teach", reply, "teach", "started", start, rdt=rdt, phrase=phrase,
+                          world=self.world.name, scene=self.scene)
+
+    # ------------------------------------------------------------------ fetch commands
+    def _substitute(self, text: str) -> str:
+        for word, replacement in self.synonyms.items():
+            text = re.sub(rf"\b{re.escape(word)}\b", replacement, text, flags=re.I)
+        return text
+
+    def _fetch_text(self, obj: str | None, phrase: str | None, room: str | None) -> str:
+        place = re.sub(r"^(on|at|by) ", "", phrase or "").strip()
+        parts = [f"bring me the {obj}" if obj else "go"]
+        if place:
+            parts.append(f"from {place}" if obj else f"to {place}")
+        if room:
+            parts.append(f"in the {room}")
+        return " ".join(parts)
+
+    def _command(self, text: str, start: float, force: bool = False, original: str | None = None) -> Turn:
+        said = original or text
+        text = self._substitute(text)
+        parsed = self.services.parser(self.world).parse(text)
+        plan = parsed.plan
+        unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in _POLITE]
+        tags = dict(zip(parsed.analysis.tokens, parsed.analysis.pos))
+        nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))]
+        if plan.room is None:  # the parser missed a room the words name ("go to the bedroom")
+            named = [r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text.lower())]
+            if len(named) == 1:
+                retry = f"go into the {named[0]}" if not (plan.nodes or plan.object) else f"{text} in the {named[0]}"
+                again = self.services.parser(self.world).parse(retry).plan
+                if again.room == named[0]:
+                    text, plan = retry, again
+        has_plan = bool(plan.nodes or plan.room or plan.object)
+        if not has_plan:
+            if unused:
+                words = _join([f"'{w}'" for w in unused[:3]])
+                return self._turn(said, "command", f"Sorry, I didn't understand that — I don't know "
+                                  f"{'the word' if len(unused) == 1 else 'the words'} {words}. Say \"help\" "
+                                  "to hear what I can do.", "none", "not_understood", start, unknown=unused)
+            return self._turn(said, "command", "Sorry, I didn't understand that. Say \"help\" to hear what I can "
+                              "do.", "none", "not_understood", start)
+        if nouns and not force:
+            word = nouns[0]
+            self.pending = {"kind": "word", "word": word, "text": text, "original": said}
+            return self._turn(said, "command", f"I don't know the word '{word}' — is it a table, a chair, a "
+                              "couch or a bed?", "clarify", "asked", start, unknown=unused, plan=plan.to_dict())
+        if self.busy:
+            return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
+                              "none", "busy", start)
+        room = plan.room
+        obj = plan.object
+        if room is None:
+            seen = self.memory.recall(self.world.name, obj) if obj else None
+            if seen is not None and seen.room and not plan.nodes:
+                return self._start_fetch(said, self._fetch_text(obj, seen.phrase, seen.room), seen.room, obj,
+                                         start, memory=seen.to_dict())
+            if seen is not None and seen.room:
+                room = seen.room
+                text = f"{text} in the {room}"
+            elif not force:
+                self.pending = {"kind": "room", "text": text, "original": said}
+                rooms = _join(["the " + r for r in self.rooms], "or")
+                what = f"your {obj}" if obj else "it"
+                return self._turn(said, "command", f"Which room should I look for {what} in — {rooms}?",
+                                  "clarify", "asked", start, missing="room", plan=plan.to_dict())
+        if not force:
+            for flag in plan.flags:
+                if flag.startswith("ambiguous_target:"):
+                    word = flag.split(":")[1]
+                    turn = self._ask_which(said, text, word, room, obj, start)
+                    if turn is not None:
+                        return turn
+            word = next((n.target for n in plan.nodes if not getattr(n, "referenced", True)
+                         and n.target in FURNITURE_CHOICES), None)
+            if word and room:
+                turn = self._ask_which(said, text, word, room, obj, start)
+                if turn is not None:
+                    return turn
+        return self._start_fetch(said, text, room, obj, start, plan=plan.to_dict(),
+                                 ignored=unused)
+
+    def _ask_which(self, said, text, word, room, obj, start) -> Turn | None:
+        items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
+        if len(items) < 2 or room is None:
+            return None
+        describer = self.services.describer
+        options = []
+        for item in items:
+            phrase = furniture_phrase(describer, self.world, self.scene, item)
+            options.append({"id": item.id, "phrase": phrase, "room": item.room})
+        said_options = [("the one " + re.sub(rf"^on the {word} ", "", o["phrase"])) for o in options]
+        count = NUMBER_WORDS.get(len(items), str(len(items)))
+        reply = f"There are {count} {word}s in the {room} — {_join(said_options, 'or')}?"
+        self.pending = {"kind": "which", "word": word, "room": room, "object": obj, "options": options,
+                        "text": text, "original": said, "asked": reply}
+        return self._turn(said, "command", reply, "clarify", "asked", start, options=options)
+
+    # ------------------------------------------------------------------ answers in context
+    def _resolve(self, text: str, intent, start: float) -> Turn | None:
+        p = self.pending
+        norm = intent.text
+        if p["kind"] == "confirm":
+            self.pending = None
+            if intent.name == "yes":
+                return self._command(p["command"], start, force=True, original=text)
+            if intent.name == "no":
+                return self._turn(text, "no", "OK.", "none", "answered", start)
+            return None
+        if p["kind"] == "word":
+            word = p["word"]
+            choice = next((f for f in FURNITURE_CHOICES if re.search(rf"\b{f}s?\b", norm)), None)
+            if choice is None and norm in ("sofa",):
+                choice = "couch"
+            if intent.name == "yes" and choice is None:
+                choice = "table"
+            if choice is not None:
+                self.pending = None
+                self.synonyms[word.lower()] = choice
+                return self._command(p["text"], start, original=text)
+            if intent.name == "no":
+                self.pending = None
+                return self._turn(text, "no", f"OK — then I can't use '{word}'. Could you say it another way?",
+                                  "none", "not_understood", start)
+            return None
+        if p["kind"] == "room":
+            room = next((r for r in self.rooms if r in norm), None)
+            if room is None:
+                plan = self.services.parser(self.world).parse(text).plan
+                room = plan.room
+            if room is not None:
+                self.pending = None
+                return self._command(f"{p['text']} in the {room}", start, original=text)
+            if intent.name in ("command",) and len(norm.split()) > 4:
+                self.pending = None
+                return None  # a new command
+            rooms = _join(["the " + r for r in self.rooms], "or")
+            return self._turn(text, "answer", f"Sorry, which room — {rooms}?", "clarify", "asked", start)
+        if p["kind"] == "which":
+            index = self._choose(norm, text, p)
+            if index is not None:
+                self.pending = None
+                option = p["options"][index]
+                command = self._fetch_text(p["object"], option["phrase"], option["room"])
+                turn = self._command(command, start, force=True, original=text)
+                turn.data["chosen"] = option["id"]
+                return turn
+            if intent.name == "command" and len(norm.split()) > 5:
+                self.pending = None
+                return None
+            return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]
+                              + " (You can also say \"the first\" or \"never mind\".)", "clarify", "asked", start)
+        return None
+
+    def _choose(self, norm: str, text: str, p: dict) -> int | None:
+        return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)
+
+    # ------------------------------------------------------------------ running a fetch
+    def _start_fetch(self, said, text, room, obj, start, **data) -> Turn:
+        reply = f"Going to the {room}." if room else "On my way."
+        turn = self._turn(said, "command", reply, "fetch", "started", start, command=text, room=room,
+                          object=obj, **data)
+        turn.final = False
+        previous = self._job
+        job = _Job(threading.Event())
+        job.thread = threading.Thread(target=self._run_fetch, args=(job, previous, text, room, obj),
+                                      name="assistant-fetch", daemon=True)
+        self._job = job
+        job.thread.start()
+        return turn
+
+    def _speak(self, sentence: str) -> None:
+        self.last_said = sentence
+        try:
+            self.say(sentence)
+        except Exception:  # a front end's problem must not kill the fetch
+            pass
+
+    def _run_fetch(self, job: "_Job", previous: "_Job | None", text: str, room: str | None,
+                   obj: str | None) -> None:
+        start = time.perf_counter()
+        if previous is not None:  # a stopped fetch winds down at its robot's next call
+            previous.thread.join(30.0)
+        words = {f.id: f.word for f in self.world.scene(self.scene).furniture}
+
+        def on_event(name: str, data: dict) -> None:
+            if job.stop.is_set():
+                raise Interrupted()
+            if self.on_event is not None:
+                try:
+                    self.on_event(name, data)
+                except Exception:
+                    pass
+            sentence = progress_sentence(name, data, words)
+            if sentence:
+                self._speak(sentence)
+            if job.stop.is_set():
+                raise Interrupted()
+
+        try:
+            report = self.services.fetch(text, self.world.name, self.scene, on_event, stop=job.stop,
+                                         on_pose=self.on_pose)
+        except Interrupted:
+            final = Turn(text, "command", "I've stopped.", "fetch", "stopped", {"command": text},
+                         time.perf_counter() - start)
+        except Exception as error:
+            final = Turn(text, "command", f"Sorry, I couldn't do that ({error}).", "fetch", "failed",
+                         {"command": text}, time.perf_counter() - start)
+        else:
+            if job.stop.is_set():
+                final = Turn(text, "command", "I've stopped.", "fetch", "stopped", {"command": text},
+                             time.perf_counter() - start)
+            else:
+                final = self._finish(text, report, obj, start)
+        job.final = final
+        self.history.append(final)
+        self._speak(final.reply)
+        if self.on_finish is not None:
+            try:
+                self.on_finish(final)
+            except Exception:
+                pass
+
+    def _finish(self, text, report, obj, start) -> Turn:
+        obj = obj or report.object
+        furniture = report.target_furniture or {}
+        item = next((f for f in self.world.scene(self.scene).furniture if f.id == furniture.get("id")), None)
+        data = {"command": text, "failure": report.failure, "final_pose": report.final_pose,
+                "target_furniture": furniture or None, "executor_message": report.message}
+        if report.failure and report.failure != "not_visible":
+            reply = f"Sorry, I couldn't do it: {report.message or report.failure}."
+            return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
+        if item is not None:
+            phrase = furniture_phrase(self.services.describer, self.world, self.scene, item)
+            where = f"{phrase} in the {item.room}"
+        elif furniture.get("centre") is not None and furniture.get("name"):
+            # sensed perception: the detector's own furniture instance, not a world-file item
+            centre = furniture["centre"]
+            found = self.world.floorplan.room_at(float(centre[0]), float(centre[1]))
+            room = getattr(found, "name", found)
+            item = _Seen(str(furniture.get("id")), str(furniture["name"]), room)
+            phrase = f"on the {item.word}"
+            where = f"{phrase} in the {room}" if room else phrase
+        else:
+            phrase, where = None, "here"
+        if obj and report.object_seen:
+            before = self.memory.recall(self.world.name, obj)
+            self.memory.remember(self.world.name, obj, item.room if item else None, item.id if item else None,
+                                 item.word if item else None, phrase)
+            moved = before is not None and before.furniture != (item.id if item else None)
+            reply = f"Here it is: I can see your {obj} {where}." + (
+                " It wasn't where I saw it last; I've updated my memory." if moved else "")
+            data["remembered"] = True
+            return Turn(text, "command", reply, "fetch", "success", data, time.perf_counter() - start)
+        if obj:
+            before = self.memory.recall(self.world.name, obj)
+            if before is not None and item is not None and before.furniture == item.id:
+                self.memory.forget(self.world.name, obj)
+            reply = f"I'm at the {item.word if item else 'place you described'}, but I can't see your {obj} {where}."
+            return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
+        if item is not None:
+            where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
+        return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
+                    time.perf_counter() - start)
+
+
+@dataclass
+class _Seen:
+    """Furniture the detector reported (id, word, room) when it is not a world-file item."""
+
+    id: str
+    word: str
+    room: str | None
+
+
+@dataclass
+class _Job:
+    """One fetch in its worker thread."""
+
+    stop: threading.Event
+    thread: threading.Thread | None = None
+    final: Turn | None = None
+
+
+_POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
+           "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
+
+_VAGUE = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}
+_KNOWN: dict = {}
+
+
+def _known_objects(world) -> list[str]:
+    """Object names the robot can look for (cached per world; the generation layer's list)."""
+    key = id(world)
+    if key not in _KNOWN:
+        from assistant.generation import known_objects
+
+        _KNOWN[key] = list(known_objects(world))
+    return _KNOWN[key]

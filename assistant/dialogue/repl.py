@@ -1,0 +1,218 @@
+"""The terminal front end of ``assistant chat`` (see :mod:`assistant.cli.chat`)."""
+
+from __future__ import annotations
+
+import datetime as _dt
+import json
+import signal
+import sys
+import threading
+from pathlib import Path
+
+from assistant.dialogue.manager import DialogueManager, Turn
+from assistant.dialogue.memory import ObjectMemory, default_data_dir
+from assistant.dialogue.services import Services
+from assistant.fileio import atomic_write_text
+
+PROMPT = "you> "
+
+
+class ChatSession:
+    """One terminal conversation: reads lines, prints replies and progress, keeps the
+    transcript (``transcripts/<UTC time>.json``, rewritten atomically after every turn)."""
+
+    def __init__(self, args, stdin=None, stdout=None):
+        from assistant.world import load_world
+
+        self.stdin = stdin or sys.stdin
+        self.out = stdout or sys.stdout
+        data = default_data_dir()
+        self.world = load_world(args.world)
+        self.scene = self.world.scene(args.scene).name
+        self.memory = ObjectMemory(args.memory or data / "memory.json")
+        stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%S.%fZ")
+        self.transcript_path = Path(args.transcripts or data / "transcripts") / f"{stamp}.json"
+        self.history_path = data / "chat_history"
+        self.services = Services(perception=args.perception, seed=args.seed)
+        self.view = None
+        self._print_lock = threading.RLock()
+        self._interrupts = 0
+        self._reading = False
+        self._leaving = False
+        self.interactive = self.stdin.isatty()
+        self.records: list[dict] = []
+        self.manager = DialogueManager(self.world, self.scene, self.services, self.memory, say=self._progress,
+                                       on_finish=self._finished)
+        if getattr(args, "view", False):
+            self._open_view()
+
+    # ----------------------------------------------------------------- output
+    def _print(self, text: str, redraw: bool = False) -> None:
+        with self._print_lock:
+            if redraw and self.interactive:
+                self.out.write("\r\033[K" + text + "\n" + PROMPT)
+                try:
+                    import readline
+
+                    self.out.write(readline.get_line_buffer())
+                except ImportError:
+                    pass
+            else:
+                self.out.write(text + "\n")
+            self.out.flush()
+
+    def _progress(self, sentence: str) -> None:
+        self._print(f"robot: {sentence}", redraw=True)
+
+    def _finished(self, turn: Turn) -> None:
+        self._record(turn)
+        if self.view is not None and turn.data.get("final_pose"):
+            try:
+                self.view.draw_robot(turn.data["final_pose"])
+                target = (turn.data.get("target_furniture") or {}).get("id")
+                if target:
+                    self.view.highlight(target)
+            except Exception:
+                pass
+
+    def _record(self, turn: Turn) -> None:
+        entry = {"time": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="milliseconds")} | turn.to_dict()
+        self.records.append(entry)
+        try:
+            atomic_write_text(self.transcript_path, json.dumps(
+                {"world": self.world.name, "scene": self.scene, "turns": self.records}, indent=1) + "\n")
+        except OSError as error:
+            self._print(f"(could not save the transcript: {error})")
+
+    # ----------------------------------------------------------------- 3D view
+    def _open_view(self) -> None:
+        try:
+            from assistant.viz import SceneView
+
+            self.view = SceneView()
+            self.view.draw_world(self.world, self.scene, robot_pose=self.world.start)
+            self.view.draw_robot(self.world.start)
+            self.manager.on_pose = lambda pose: self.view.draw_robot(pose)
+            self._print(f"3D view: {self.view.url}")
+        except Exception as error:  # the chat works without the view
+            self.view = None
+            self._print(f"(no 3D view: {error})")
+
+    # ----------------------------------------------------------------- the loop
+    def _setup_readline(self):
+        if not self.interactive:
+            return None
+        try:
+            import readline
+        except ImportError:
+            return None
+        try:
+            readline.read_history_file(self.history_path)
+        except (OSError, FileNotFoundError):
+            pass
+        readline.set_history_length(1000)
+        return readline
+
+    def _save_history(self, readline) -> None:
+        if readline is None:
+            return
+        try:
+            self.history_path.parent.mkdir(parents=True, exist_ok=True)
+            readline.write_history_file(self.history_path)
+        except OSError:
+            pass
+
+    def _read(self) -> str:
+        if self.interactive:
+            return input(PROMPT)
+        self.out.write(PROMPT)
+        self.out.flush()
+        line = self.stdin.readline()
+        if not line:
+            raise EOFError
+        return line.rstrip("\n")
+
+    def loop(self) -> int:
+        self.services.warm_up(self.world, background=True, scene=self.scene)
+        readline = self._setup_readline()
+        self._print(self.manager.greeting())
+        if self.memory.load_problem:
+            self._print(f"(memory: {self.memory.load_problem})")
+        self._print("(Ctrl-C stops the robot, Ctrl-C twice leaves, Ctrl-D leaves; transcript: "
+                    f"{self.transcript_path})")
+        previous = None
+        if threading.current_thread() is threading.main_thread():
+            previous = signal.signal(signal.SIGINT, self._on_interrupt)
+        try:
+            while not self._leaving:
+                try:
+                    self._reading = True
+                    line = self._read()
+                except KeyboardInterrupt:  # _on_interrupt did the work
+                    continue
+                except EOFError:
+                    self._end_of_input()
+                    break
+                finally:
+                    self._reading = False
+                self._interrupts = 0
+                if not line.strip():
+                    continue
+                try:
+                    turn = self.manager.handle(line)
+                    self._record(turn)
+                    if turn.reply:
+                        self._print(f"robot: {turn.reply}")
+                    if turn.action == "teach" and turn.outcome == "started":
+                        self._teach(turn)
+                except KeyboardInterrupt:
+                    continue
+            if self._leaving:
+                self._print("\nGoodbye.")
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
+            self.manager.close(timeout=5.0)
+            self._save_history(readline)
+            if self.view is not None:
+                self.view.close()
+        return 0
+
+    def _on_interrupt(self, signum, frame) -> None:
+        """Ctrl-C: the first stops the robot, a second in a row leaves."""
+        self._interrupts += 1
+        if self._interrupts >= 2:
+            self._leaving = True
+            self.manager.stop()
+        elif self.manager.stop():
+            self._print("\nrobot: Stopping. (Ctrl-C again to leave)")
+        else:
+            self._print("\n(Ctrl-C again to leave)")
+        if self._reading or self._leaving:
+            raise KeyboardInterrupt
+
+    def _end_of_input(self) -> None:
+        if self.manager.busy:
+            self._print("\n(waiting for the robot to finish; Ctrl-C stops it)")
+            self.manager.wait()
+        self._print("\nGoodbye.")
+
+    def _teach(self, turn: Turn) -> None:
+        """Record the demonstration (``assistant teach``'s session) right here."""
+        try:
+            from assistant.policy.teaching import run_teaching
+
+            outcome = run_teaching(turn.data["rdt"], self.world.name, self.scene,
+                                   echo=lambda text: self._print(text))
+        except Exception as error:
+            self._print(f"robot: Sorry, I couldn't record that ({error}).")
+            return
+        if outcome.saved is None:
+            reply = "OK, I didn't save anything."
+        else:
+            reply = f"Thank you — I've saved that demonstration ({outcome.saved})."
+        done = Turn("(demonstration)", "teach", reply, "teach", "success" if outcome.saved else "cancelled",
+                    {"rdt": turn.data["rdt"], "saved": None if outcome.saved is None else str(outcome.saved)})
+        self.manager.last_said = reply
+        self._record(done)
+        self._print(f"robot: {reply}")

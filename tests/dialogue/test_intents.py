@@ -1,0 +1,45 @@
+import pytest
+
+from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("stop", "stop"), ("Stop!", "stop"), ("halt", "stop"), ("please stop now", "stop"),
+    ("never mind", "cancel"), ("cancel", "cancel"), ("forget it", "cancel"),
+    ("repeat that", "repeat"), ("Sorry, what did you say?", "repeat"),
+    ("help", "help"), ("what can you do?", "help"),
+    ("which home am I in?", "which_home"), ("where am I", "which_home"),
+    ("start over", "start_over"), ("let's start over", "start_over"),
+    ("let me show you what 'in front of the couch' means", "teach"),
+    ("how do I get to my mug?", "where_dynamic"),
+    ("where is my mug?", "where"), ("Where's the laptop", "where"), ("have you seen my fork", "where"),
+    ("where did I leave the glasses case", "where"),
+    ("yes", "yes"), ("no thanks", "no"), ("hello", "greet"), ("thanks!", "thanks"),
+    ("you stupid robot", "rude"),
+    ("bring me the mug from the table in front of the couch", "command"),
+    ("", "empty"), ("   ", "empty"),
+])
+def test_classify(text, intent):
+    assert classify(text).name == intent
+
+
+def test_fetch_commands_are_not_control():
+    # "stop" inside a longer sentence is not an interruption
+    assert classify("bring the mug to the bus stop table").name == "command"
+
+
+def test_normalise():
+    assert normalise("Where's my MUG?!") == "wheres my mug"
+
+
+def test_ordinals():
+    assert ordinal_choice("the second") == 1
+    assert ordinal_choice("the first one") == 0
+    assert ordinal_choice("the last one") == -1
+    assert ordinal_choice("the one with the chairs") is None
+
+
+def test_teach_phrase():
+    assert teach_phrase("let me show you what 'in front of the couch' means") == "in front of the couch"
+    assert teach_phrase('I want to teach you what "to the left of the bed" means') == "to the left of the bed"
+    assert teach_phrase("let me show you what behind the couch means") == "behind the couch"
