@@ -5,6 +5,7 @@ exceptions for things that happen in a home. Planning reads the floor plan the r
 and the furniture perception reports; motion drives any robot through its shared interface.
 """
 
+from assistant.executor.fetch import FetchResult, FetchTask, NodeReport
 from assistant.executor.localization import FloorplanLocalizer, LocalizationUpdate, wall_faces
 from assistant.executor.motion import (
     DrivableRobot,
@@ -27,8 +28,18 @@ from assistant.executor.planning import (
     plan_path,
 )
 from assistant.executor.rooms import DoorCrossing, RoomGraph, door_crossing, room_entry_waypoints, room_of
+from assistant.executor.sensing import (
+    PERCEPTION_MODES,
+    FurnitureSource,
+    OracleFurniture,
+    SensedFurniture,
+    make_furniture_source,
+)
+from assistant.executor.trial import FetchRunner, object_visibility
 
 __all__ = [
+    "FetchResult", "FetchRunner", "FetchTask", "FurnitureSource", "NodeReport", "OracleFurniture",
+    "PERCEPTION_MODES", "SensedFurniture", "make_furniture_source", "object_visibility",
     "DepthObstacles", "DoorCrossing", "DrivableRobot", "ExecutionResult", "ExecutionStatus", "FloorplanLocalizer",
     "LocalizationUpdate", "Localizer", "MotionLimits", "Navigator", "NoPathError",
     "OccupancyMap", "PathFollower", "PlannedPath", "RoomGraph", "build_occupancy", "door_crossing",

@@ -149,6 +149,11 @@ def build_occupancy(world: World, entities: Iterable[Entity] = (), *,
     grow = int(math.ceil(UNKNOWN_BEYOND_ROOMS_M / grid.resolution_m))
     if grow > 0:
         known = ndimage.binary_dilation(known, iterations=grow)
+    for door in world.floorplan.doors:  # the floor through a thick wall's door gap is known too
+        cx, cy = door.centre
+        half = door.width_m / 2
+        known |= grid.rasterize_polygon(np.array([[cx - half, cy - half], [cx + half, cy - half],
+                                                  [cx + half, cy + half], [cx - half, cy + half]]))
     obstacles = ~known
     for wall in world.floorplan.walls:
         obstacles |= grid.rasterize_polygon(wall.polygon_array)

@@ -1,0 +1,140 @@
+"""``assistant fetch TEXT --world NAME``: follow a fetch command in the simulator, from text to
+the final pose, and say whether the target object ends up in view."""
+
+from __future__ import annotations
+
+import argparse
+
+from assistant.cli.common import add_json_flag, emit_json, run_batch
+
+PERCEPTION_MODES = ("sensed", "oracle")
+SCENES = ("original", "modified")
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "fetch", help="follow a fetch command in the simulator",
+        description="Parse a fetch command, enter the target room, follow its RDT nodes with the "
+                    "policy models and perception, face the target furniture, and report whether "
+                    "the target object is in the final camera frame (evaluation from the "
+                    "simulator's hit ids; the robot never reads them).",
+    )
+    parser.add_argument("text", nargs="*", help="the command (omit with --batch)")
+    parser.add_argument("--world", metavar="NAME", help="world name or file (required without --batch)")
+    parser.add_argument("--scene", choices=SCENES, default="original", help="furniture placement (default: original)")
+    parser.add_argument("--perception", choices=PERCEPTION_MODES, default="sensed",
+                        help="sensed: furniture detector on depth frames (default); oracle: the world "
+                             "file's furniture (to separate language from perception errors)")
+    parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
+                        help="grounding model (default: the one measured best)")
+    parser.add_argument("--seed", type=int, default=0, help="simulator seed (odometry and depth noise)")
+    parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
+                        "(default: the one the command names)")
+    parser.add_argument("--batch", metavar="FILE",
+                        help="JSON lines {text, world, scene, perception[, object, seed]} ('-' for stdin); "
+                             "one JSON object per line out")
+    parser.add_argument("--view", action="store_true",
+                        help="show the run in the 3D view (meshcat) and wait until Ctrl-C")
+    add_json_flag(parser)
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from assistant.errors import AssistantError
+    from assistant.executor.trial import FetchRunner
+
+    if args.batch and args.text:
+        raise AssistantError("give either TEXT or --batch FILE, not both")
+    if not args.batch and not args.text:
+        raise AssistantError("nothing to fetch: give the command as TEXT or use --batch FILE")
+    runner = FetchRunner(grounder=args.grounder)
+    if args.batch:
+        def handle(request: dict) -> dict:
+            unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
+            if unknown:
+                raise AssistantError(f"unknown key(s) {', '.join(sorted(unknown))}; a request has "
+                                     "text, world, scene, perception, object, seed")
+            if not request.get("text") or not request.get("world"):
+                raise AssistantError("a request needs 'text' and 'world'")
+            perception = request.get("perception", args.perception)
+            if perception not in PERCEPTION_MODES:
+                raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
+            return runner.run(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
+                              perception, int(request.get("seed", args.seed)), request.get("object")).data
+
+        return run_batch(args.batch, handle, json_requests=True)
+    if not args.world:
+        raise AssistantError("say which home with --world NAME (see `assistant world --list`)")
+    view = _Viewer() if args.view else None
+    outcome = runner.run(" ".join(args.text), args.world, args.scene, args.perception, args.seed, args.object,
+                         on_event=view.on_event if view else None)
+    if args.json:
+        emit_json(outcome.data)
+    else:
+        _print(outcome.data)
+    if view is not None:
+        view.finish(outcome)
+    return 0
+
+
+def _print(d: dict) -> None:
+    plan = d["plan"]
+    print(f"plan: room={plan['room'] or '?'} object={plan['object'] or '?'} kind={plan['kind']} "
+          f"nodes={', '.join(plan['nodes']) or '-'}")
+    for node in d["nodes"]:
+        pose = node["move_to"]
+        where = f"({pose[0]:.2f}, {pose[1]:.2f}, {pose[2]:.2f} rad)" if pose else "-"
+        score = f"{node['score']:.3g}" if node["score"] is not None else "-"
+        print(f"  {node['rdt']:<22} {node['status']:<20} move-to {where} score {score}  "
+              f"ref={node['reference'] or '-'} target={node['target'] or '-'}")
+    fp = d["final_pose"]
+    print(f"final pose: ({fp[0]:.2f}, {fp[1]:.2f}, {fp[2]:.2f} rad)   robot said: {d['executor']['message']}")
+    tv = d["target_visible"]
+    where = d["target_position"]
+    print(f"{d['object'] or 'object'} at {where}: {tv['pixels']} pixels in view"
+          + (f" at {tv['distance']:.2f} m" if tv["distance"] is not None else ""))
+    print(("SUCCESS" if d["success"] else f"FAILED: {d['failure']}")
+          + f"   ({d['sim_seconds']:.1f} s simulated, {d['wall_seconds']:.1f} s wall-clock)")
+
+
+class _Viewer:
+    """Draws the run in a :class:`~assistant.viz.SceneView` (robot path, move-to score maps)."""
+
+    def __init__(self):
+        from assistant.viz import SceneView
+
+        self.view = SceneView()
+        self.drawn_world = False
+        self.goals = 0
+        self.points: list = []
+
+    def on_event(self, name: str, data: dict) -> None:
+        if name == "move_to":
+            self.goals += 1
+            if data.get("score_map") is not None:
+                poses, scores = data["score_map"]
+                self.view.draw_arrows(f"scores/{self.goals}", poses, scores)
+            g = data["goal"]
+            self.points.append((g.x, g.y))
+            self.view.draw_robot(g, name=f"goal/{self.goals}", colour="#2b8cd9")
+
+    def finish(self, outcome) -> None:
+        from assistant.world import load_world
+
+        d = outcome.data
+        world = load_world(d["world"])
+        self.view.draw_world(world, d["scene"], robot_pose=d["final_pose"])
+        self.view.draw_robot(d["final_pose"])
+        route = [tuple(world.start.xy.ravel()[:2])] + self.points + [tuple(d["final_pose"][:2])]
+        self.view.draw_path("move-to goals", route)
+        target = (d["executor"].get("target_furniture") or {}).get("id")
+        if target:
+            try:
+                self.view.highlight(target)
+            except Exception:  # highlighting is a courtesy; the run's data is already printed
+                pass
+        print(f"3D view: {self.view.url}  (Ctrl-C to quit)")
+        try:
+            self.view.wait()
+        finally:
+            self.view.close()

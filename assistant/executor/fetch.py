@@ -1,0 +1,685 @@
+"""The fetch task (dissertation 4.3 II.D, Fig. 5.8): from a grounded plan to a pose facing the
+furniture the object is on.
+
+The high tier is a sequence of three sub-tasks:
+
+1. **enter the target room** through its door (:meth:`Navigator.enter_room` on the room graph),
+   then look around once so perception sees the room;
+2. **follow the RDT nodes** in order (the low tier, Fig. 5.8: collect sensory data, build the
+   world state feature, decide the move-to target with the node's policy model, drive there):
+
+   * a *dynamic* node (``move``/``room``/``wall`` reference, no target) asks its policy model
+     for the move-to pose relative to the robot, the room or the wall ahead;
+   * a *static* node looks for its reference and target furniture among what perception has
+     reported in the room, trying the node's reference-direction pairs in order; when a
+     reference or target is not seen it moves to the room's middle for a better view and looks
+     around again; the (reference, target) instance pair that best fits the direction is handed
+     to the policy model, whose move-to pose the robot drives to;
+3. **face the target furniture**: when it is farther than :attr:`FetchTask.view_distance_m` or
+   outside the camera's view, drive to a viewing pose beside it (the free side nearest the
+   robot) and turn to it.
+
+Recovery (the dissertation's future work, 5.7): when the reference or target is never found,
+or the nodes run out without target furniture in view, the robot searches the surfaces the plan
+makes likely — the room's furniture of the target's kind, nearest the robot's view first —
+before giving up with ``reference_not_found``.
+
+Everything ends in a :class:`FetchResult` (status: success or why not). All driving is bounded
+by the follower's own budgets and by :attr:`FetchTask.max_sim_seconds` over the whole task.
+The task reads the floor plan (told), the perception source and the robot's odometry — never
+the world file's furniture or objects (only :class:`~assistant.executor.sensing.OracleFurniture`
+does, and only when asked for).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from assistant.executor.localization import FloorplanLocalizer
+from assistant.executor.navigation import Navigator
+from assistant.executor.obstacles import DepthObstacles
+from assistant.executor.outcome import ExecutionResult, ExecutionStatus
+from assistant.executor.rooms import room_of
+from assistant.executor.sensing import (
+    FurnitureSource,
+    entity_centre,
+    entity_polygon,
+    entity_room,
+    environment_items,
+)
+from assistant.geometry import Pose2D, wrap_angle
+from assistant.world import Entity, World
+
+#: half the Kinect's horizontal field of view (57°), radians
+HALF_FOV_RAD = math.radians(28.5)
+#: directions of the RDT model as angles in the reference's frame (0 = its front)
+DIRECTION_ANGLES = {"front": 0.0, "left": math.pi / 2, "back": math.pi, "right": -math.pi / 2}
+
+
+@dataclass
+class NodeReport:
+    """What happened at one RDT node."""
+
+    rdt: str
+    kind: str  # "dynamic" or "static"
+    status: str
+    message: str = ""
+    model: str | None = None  # the policy model used (may be a fallback RDT)
+    reference: str | None = None  # entity id
+    target: str | None = None  # entity id
+    move_to: list | None = None  # [x, y, heading]
+    score: float | None = None
+    tried: list = field(default_factory=list)  # [reference, direction] pairs tried
+
+    def to_dict(self) -> dict:
+        return {"rdt": self.rdt, "kind": self.kind, "status": self.status, "message": self.message,
+                "model": self.model, "reference": self.reference, "target": self.target,
+                "move_to": self.move_to, "score": self.score, "tried": self.tried}
+
+
+@dataclass
+class FetchResult:
+    """The outcome of one fetch: ``status`` (success or the failure reason), the plan, each
+    node's report, the robot's final pose (its own estimate, world frame), the target
+    furniture chosen (id, centre) and simulated seconds."""
+
+    status: ExecutionStatus
+    message: str
+    plan: dict | None = None
+    nodes: list[NodeReport] = field(default_factory=list)
+    final_pose: Pose2D | None = None
+    target_furniture: dict | None = None
+    sim_seconds: float = 0.0
+    distance_m: float = 0.0
+    recovered: bool = False
+    details: dict = field(default_factory=dict)
+    score_map: tuple | None = None  # (poses (N, 3), scores (N,)) of the last policy search
+
+    @property
+    def success(self) -> bool:
+        return self.status is ExecutionStatus.SUCCESS
+
+    def to_dict(self) -> dict:
+        p = self.final_pose
+        return {"status": self.status.value, "success": self.success,
+                "failure": None if self.success else self.status.value, "message": self.message,
+                "plan": self.plan, "nodes": [n.to_dict() for n in self.nodes],
+                "final_pose": None if p is None else [round(p.x, 3), round(p.y, 3), round(p.theta, 4)],
+                "target_furniture": self.target_furniture, "recovered": self.recovered,
+                "sim_seconds": round(self.sim_seconds, 2), "distance_m": round(self.distance_m, 2),
+                "details": self.details}
+
+
+class _Budget(Exception):
+    """Raised inside the task when the simulated-time budget is spent."""
+
+
+@dataclass
+class FetchTask:
+    """Carries out grounded plans in ``world`` with a robot.
+
+    ``perception``: a :class:`~assistant.executor.sensing.FurnitureSource`; ``policies``: a
+    :class:`~assistant.policy.library.PolicyLibrary` (anything with ``model(rdt)`` returning an
+    object with ``.model.infer_move_to`` and ``.used``), or None for the geometric fallback
+    only. ``view_distance_m``: the final pose stands at most this far from the target's centre;
+    ``standoff_m``: gap from the furniture's edge to the robot's centre at the viewing pose.
+    """
+
+    world: World
+    perception: FurnitureSource
+    policies: object | None = None
+    localize: bool = True
+    max_sim_seconds: float = 900.0
+    view_distance_m: float = 1.8
+    standoff_m: float = 0.75
+    on_event: Callable[[str, dict], None] | None = None
+    perceive_every_m: float = 1.0
+    perceive_every_rad: float = 0.8
+    weak_fit: float = 0.1
+
+    # ------------------------------------------------------------------ set-up
+    def _setup(self, robot) -> None:
+        self._robot = robot
+        self._sim = 0.0
+        self._dist = 0.0
+        self._t0 = robot.odometry().timestamp_s
+        self.obstacles = DepthObstacles(self.world, entities=self.perception.furniture)
+        self._last_perceived: Pose2D | None = None
+        self._perceive_room: str | None = None
+        listeners = [self.obstacles.add_frame, self._observe_moving]
+        self.localizer = FloorplanLocalizer(self.world, listeners=listeners) if self.localize else None
+        self.navigator = Navigator(self.world, self.obstacles.occupancy, localizer=self.localizer, max_replans=10)
+        self._last_map = None
+
+    def _event(self, name: str, **data) -> None:
+        if self.on_event is not None:
+            self.on_event(name, data)
+
+    def _pose(self) -> Pose2D:
+        return self.navigator.pose(self._robot)
+
+    def _spent(self) -> float:
+        return self._robot.odometry().timestamp_s - self._t0
+
+    def _step(self, result: ExecutionResult) -> ExecutionResult:
+        self._dist += result.distance_m
+        if self._spent() > self.max_sim_seconds:
+            raise _Budget()
+        return result
+
+    def _observe_moving(self, frame, pose: Pose2D) -> None:
+        """Perception on the localizer's frames while driving: only in the target room, and
+        only every :attr:`perceive_every_m` metres or :attr:`perceive_every_rad` of turning
+        (detection is the costly part of a fetch)."""
+        if self._perceive_room is None or room_of(self.world, pose) != self._perceive_room:
+            return
+        last = self._last_perceived
+        if last is not None and math.hypot(pose.x - last.x, pose.y - last.y) < self.perceive_every_m \
+                and abs(wrap_angle(pose.theta - last.theta)) < self.perceive_every_rad:
+            return
+        self._last_perceived = pose
+        self.perception.observe(frame, pose)
+
+    def _observe_here(self) -> None:
+        frame = self._robot.depth_frame()
+        pose = self._pose()
+        self.obstacles.add_frame(frame, pose)
+        self.perception.observe(frame, pose)
+
+    def _look_around(self) -> ExecutionResult:
+        def on_frame(frame, pose):
+            self.obstacles.add_frame(frame, pose)
+            self.perception.observe(frame, pose)
+            return False
+
+        return self._step(self.navigator.look_around(self._robot, on_frame))
+
+    # ------------------------------------------------------------------ the task
+    def run(self, robot, plan) -> FetchResult:
+        """Carry out ``plan`` (a :class:`~assistant.grounding.GroundingPlan`) with ``robot``
+        (connected). Never raises for what happens in a home; returns a :class:`FetchResult`."""
+        self._setup(robot)
+        plan_dict = plan.to_dict() if hasattr(plan, "to_dict") else dict(plan)
+        reports: list[NodeReport] = []
+        out = dict(plan=plan_dict, nodes=reports)
+        try:
+            result = self._run(plan, reports, out)
+        except _Budget:
+            result = FetchResult(ExecutionStatus.TIMEOUT,
+                                 f"the fetch used up its budget of {self.max_sim_seconds:.0f} s of robot time",
+                                 **out)
+        result.final_pose = self._pose()
+        result.sim_seconds = self._spent()
+        result.distance_m = self._dist
+        if self.localizer is not None:
+            result.details["localizer_updates"] = len(getattr(self.localizer, "updates", []) or [])
+        result.details["frames_perceived"] = getattr(self.perception, "frames", None)
+        return result
+
+    def _run(self, plan, reports: list[NodeReport], out: dict) -> FetchResult:
+        rooms = [r.name for r in self.world.floorplan.rooms]
+        if not plan.nodes and not plan.room and not plan.object:
+            return FetchResult(ExecutionStatus.PARSE, "the command could not be understood: no room, "
+                               "place or object was found in it", **out)
+        if not plan.room:
+            here = room_of(self.world, self._pose())
+            if not plan.nodes or not plan.nodes[0].dynamic:  # nothing says where to go from here
+                unused = [w for w in getattr(plan, "unused", []) or []]
+                extra = f" (words not understood: {', '.join(unused)})" if unused else ""
+                return FetchResult(ExecutionStatus.NO_ROOM, "the command names no room of this home"
+                                   f"{extra}; say which room ({', '.join(rooms)})", **out)
+            room = here
+        else:
+            room = plan.room
+        if room not in rooms:
+            return FetchResult(ExecutionStatus.NO_ROOM, f"this home has no room called {room!r}; "
+                               f"its rooms are {', '.join(rooms)}", **out)
+        # 1. enter the target room, look around
+        entered = self._enter(room)
+        self._event("entered", room=room, result=entered)
+        if not entered.success:
+            return FetchResult(entered.status, f"could not enter the {room}: {entered.message}", **out)
+        self._perceive_room = room
+        entry = self._pose()
+        self._look_around()
+        # back to the heading it entered with: "on your right", "turn left" are said from there
+        self._step(self.navigator.follower.turn_to(self._robot, entry.theta, localizer=self.localizer))
+        # 2. RDT nodes
+        target: Entity | None = None
+        node_failure: tuple[ExecutionStatus, str] | None = None
+        last_map = None
+        for node in plan.nodes:
+            report, chosen, score_map = self._run_node(node, room)
+            reports.append(report)
+            last_map = score_map or last_map
+            self._event("node", report=report)
+            if report.status == ExecutionStatus.SUCCESS.value:
+                if chosen is not None:
+                    target = chosen
+            elif report.status in (ExecutionStatus.COLLISION.value, ExecutionStatus.TIMEOUT.value):
+                return FetchResult(ExecutionStatus(report.status), f"node {report.rdt}: {report.message}",
+                                   score_map=last_map, **out)
+            else:
+                node_failure = (ExecutionStatus(report.status), f"node {report.rdt}: {report.message}")
+        # 3. face the target furniture (or search the likely surfaces)
+        recovered = False
+        wanted = self._target_word(plan)
+        if target is None or not self._in_view(target):
+            if target is None:
+                candidates = self._likely_surfaces(room, wanted)
+                if not candidates:
+                    self._better_view(room)
+                    candidates = self._likely_surfaces(room, wanted)
+                if not candidates:
+                    status, message = node_failure or (
+                        ExecutionStatus.REFERENCE_NOT_FOUND, f"no {wanted} was seen in the {room}")
+                    return FetchResult(status, message, score_map=last_map, **out)
+                target = candidates[0]
+                recovered = True
+        faced = self._face(target)
+        info = {"id": target.id, "name": target.name, "centre": [round(v, 3) for v in entity_centre(target)]}
+        if not faced.success:
+            return FetchResult(faced.status, f"could not reach a view of the {target.name}: {faced.message}",
+                               target_furniture=info, recovered=recovered, score_map=last_map, **out)
+        if not self._in_view(target):
+            return FetchResult(ExecutionStatus.NOT_VISIBLE, f"the {target.name} is not in view at the end",
+                               target_furniture=info, recovered=recovered, score_map=last_map, **out)
+        message = f"facing the {target.name} in the {room}"
+        if recovered:
+            message += " (found by searching the likely surfaces)"
+        return FetchResult(ExecutionStatus.SUCCESS, message, target_furniture=info, recovered=recovered,
+                           score_map=last_map, **out)
+
+    def _enter(self, room: str) -> ExecutionResult:
+        """Through the doors of the room graph; when no door leads there (rooms of an open
+        plan share a boundary with no wall), straight to the nearest free spot well inside."""
+        entered = self._step(self.navigator.enter_room(self._robot, room))
+        if entered.success or entered.status is not ExecutionStatus.NO_PATH or "goal" in entered.details:
+            return entered
+        r = next(r for r in self.world.floorplan.rooms if r.name == room)
+        poly = r.polygon_array
+        cx, cy = poly.mean(axis=0)
+        result = entered
+        tried: list[np.ndarray] = []
+        for _ in range(4):  # candidates from the latest occupancy: depth shows more on the way
+            pose = self._pose()
+            occ = self.obstacles.occupancy()
+            pts = np.zeros((0, 2))
+            for inset, clearance in ((0.6, 0.4), (0.3, 0.32)):  # well inside if there is room, else just inside
+                lo, hi = poly.min(axis=0) + inset, poly.max(axis=0) - inset
+                if np.any(hi < lo):
+                    lo = hi = poly.mean(axis=0)
+                xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1e-9, 0.1), np.arange(lo[1], hi[1] + 1e-9, 0.1))
+                pts = np.column_stack([xs.ravel(), ys.ravel()])
+                keep = (occ.clearance_at(pts) >= clearance) & self._reachable(occ, pose, pts)
+                for t in tried:  # not again near a spot that failed
+                    keep &= np.hypot(pts[:, 0] - t[0], pts[:, 1] - t[1]) > 0.5
+                pts = pts[keep]
+                if len(pts):
+                    break
+            if len(pts) == 0:
+                break
+            x, y = pts[int(np.argmin(np.hypot(pts[:, 0] - pose.x, pts[:, 1] - pose.y)))]
+            tried.append(np.array([x, y]))
+            result = self._step(self.navigator.go_to(self._robot, (float(x), float(y)),
+                                                     math.atan2(cy - y, cx - x), snap_goal=False))
+            inside = room_of(self.world, self._pose()) == room
+            if inside and (result.success or result.status is ExecutionStatus.NO_PATH):
+                # in the room already (the spot aimed at turned out to be taken): good enough to look
+                return ExecutionResult.ok(f"entered the {room}", final_pose=self._pose(),
+                                          details={"room": room, "open_plan": True})
+            if result.status in (ExecutionStatus.TIMEOUT,) or result.details.get("bumped"):
+                break
+        if result.success:  # arrived somewhere, but not in the room
+            result = ExecutionResult.failed(ExecutionStatus.NO_PATH, f"no way into the {room} was found",
+                                            final_pose=self._pose())
+        return result
+
+    @staticmethod
+    def _reachable(occ, pose: Pose2D, pts: np.ndarray) -> np.ndarray:
+        """Which points lie in the free region the robot stands in (pockets behind furniture
+        are left out)."""
+        labels = occ.free_regions
+        here = occ.cells_of(np.array([[pose.x, pose.y]]))[0]
+        cells = occ.cells_of(pts)
+        inside = occ.grid.contains_cells(cells)
+        if not occ.grid.contains_cells(here[None])[0]:
+            return inside
+        mine = labels[here[0], here[1]]
+        if mine == 0:  # the robot stands in a blocked cell (after a bump): do not filter
+            return inside
+        out = np.zeros(len(pts), dtype=bool)
+        out[inside] = labels[cells[inside, 0], cells[inside, 1]] == mine
+        return out
+
+    # ------------------------------------------------------------------ nodes
+    def _run_node(self, node, room: str):
+        rdts = node.rdts
+        if node.dynamic:
+            return self._dynamic_node(rdts[0], room)
+        report = NodeReport(str(node), "static", ExecutionStatus.REFERENCE_NOT_FOUND.value)
+        looked_again = False
+        said_from = self._pose()  # "on your right" keeps meaning this pose's right after a look elsewhere
+        self._support = getattr(node, "support", None)
+        for attempt in range(2):
+            for rdt in rdts:
+                report.tried.append([rdt.reference, rdt.direction])
+                pair = self._choose_pair(rdt, room, said_from)
+                if pair is None:
+                    continue
+                if pair[2] < self.weak_fit and not looked_again:
+                    self._better_view(room, self._toward(rdt, said_from))  # unsure: a better view first
+                    looked_again = True
+                    pair = self._choose_pair(rdt, room, said_from) or pair
+                reference, target, fit = pair
+                report.reference = None if reference is None else reference.id
+                report.target = target.id
+                moved, score_map = self._move_by_policy(str(rdt), reference, target, report)
+                report.status = moved.status.value
+                report.message = moved.message
+                if moved.status is ExecutionStatus.NO_PATH:  # the policy's pose is unreachable: go near the target
+                    moved = self._face(target)
+                    report.status, report.message = moved.status.value, moved.message
+                return report, target if moved.success else None, score_map
+            if looked_again:
+                break
+            self._better_view(room)
+            looked_again = True
+        wanted = " or ".join(sorted({r.reference for r in rdts if r.reference not in ("robot", "room")}))
+        report.message = (f"no {wanted} with a {node.target} " if wanted else f"no {node.target} ") + f"seen in the {room}"
+        return report, None, None
+
+    def _dynamic_node(self, rdt, room: str):
+        report = NodeReport(str(rdt), "dynamic", ExecutionStatus.SUCCESS.value)
+        report.tried.append([rdt.reference, rdt.direction])
+        reference = None
+        here = room_of(self.world, self._pose()) or room
+        if rdt.reference == "room":
+            reference = f"room:{here}"
+        elif rdt.reference == "wall":
+            reference = self._wall_ahead(here)
+        moved, score_map = self._move_by_policy(str(rdt), reference, None, report)
+        report.status, report.message = moved.status.value, moved.message
+        if moved.status is ExecutionStatus.NO_PATH:  # a dynamic step that cannot be taken: stay, go on
+            report.status = ExecutionStatus.SUCCESS.value
+            report.message = f"skipped ({moved.message})"
+        return report, None, score_map
+
+    def _move_by_policy(self, rdt: str, reference, target, report: NodeReport):
+        pose = self._pose()
+        env = environment_items(self.world, self.perception.furniture())
+        ref_id = reference if isinstance(reference, str) or reference is None else reference.id
+        tar_id = None if target is None else target.id
+        goal, score_map = None, None
+        if self.policies is not None:
+            try:
+                choice = self.policies.model(rdt)
+                found = choice.model.infer_move_to(env, pose, ref_id, tar_id)
+                report.model = choice.used
+                if len(found.scores):
+                    goal = found.pose
+                    report.score = float(found.score)
+                    score_map = (found.poses, found.scores)
+            except Exception as error:  # no model, unknown entity: fall back to geometry
+                report.model = f"none ({type(error).__name__}: {error})"
+        if goal is None:
+            goal = self._geometric_goal(rdt, pose, reference, target)
+            report.model = report.model or "geometric"
+        report.move_to = [round(goal.x, 3), round(goal.y, 3), round(goal.theta, 4)]
+        self._event("move_to", rdt=rdt, goal=goal, score_map=score_map)
+        result = self._step(self.navigator.go_to(self._robot, (goal.x, goal.y), goal.theta))
+        return result, score_map
+
+    def _geometric_goal(self, rdt: str, pose: Pose2D, reference, target) -> Pose2D:
+        """A move-to pose without a policy model: beside the target, else 1 m in the
+        direction said."""
+        if target is not None:
+            cx, cy = entity_centre(target)
+            return Pose2D(cx, cy, math.atan2(cy - pose.y, cx - pose.x))
+        direction = rdt.split("-")[1]
+        turn = DIRECTION_ANGLES.get(direction, 0.0)
+        heading = wrap_angle(pose.theta + turn)
+        return Pose2D(pose.x + math.cos(heading), pose.y + math.sin(heading), heading)
+
+    def _wall_ahead(self, room: str) -> str | None:
+        pose = self._pose()
+        env = [e for e in environment_items(self.world, ()) if e.id.startswith("wall:") and e.room == room]
+        from assistant.geometry import point_in_polygon
+
+        for step in np.arange(0.1, 12.0, 0.1):
+            p = np.array([[pose.x + step * math.cos(pose.theta), pose.y + step * math.sin(pose.theta)]])
+            for item in env:
+                if point_in_polygon(p, item.polygon_array())[0]:
+                    return item.id
+        return None
+
+    # ------------------------------------------------------------------ choosing furniture
+    def _in_room(self, room: str, word: str | None = None) -> list[Entity]:
+        out = []
+        for e in self.perception.furniture():
+            if word is not None and e.name != word:
+                continue
+            if entity_room(self.world, e) == room:
+                out.append(e)
+        return out
+
+    def _choose_pair(self, rdt, room: str, pose: Pose2D | None = None):
+        """The (reference, target, fit) instances that best fit ``rdt`` among the furniture
+        seen in ``room``; None when the reference or target is not seen. ``pose``: the robot's
+        pose the command's "your left" is said from (default: now)."""
+        targets = self._in_room(room, rdt.target)
+        if not targets:
+            return None
+        pose = pose or self._pose()
+        if rdt.reference in ("robot", "room") or rdt.reference == "move":
+            refs = [None]
+        else:
+            refs = self._in_room(room, rdt.reference)
+            if not refs:
+                return None
+        best = None
+        for ref in refs:
+            for tar in targets:
+                if ref is not None and tar.id == ref.id:
+                    continue
+                fit = self._fit(rdt, ref, tar, pose) * _size_agreement(getattr(self, "_support", None), tar)
+                if best is None or fit > best[2]:
+                    best = (ref, tar, fit)
+        return best
+
+    def _fit(self, rdt, ref: Entity | None, tar: Entity, pose: Pose2D) -> float:
+        """How well ``tar`` stands in ``rdt.direction`` of ``ref`` (the robot when None), in
+        (0, 1]: direction agreement times nearness."""
+        tx, ty = entity_centre(tar)
+        if rdt.reference == "room" or (ref is None and rdt.direction == "center"):
+            # a target named with no reference ("the mug is on the table there"): the one most
+            # in the robot's view now — where the steps so far have turned it
+            d = math.hypot(tx - pose.x, ty - pose.y)
+            bearing = wrap_angle(math.atan2(ty - pose.y, tx - pose.x) - pose.theta)
+            return (0.05 + (1.0 + math.cos(bearing)) / 2) * math.exp(-d / 3.0)
+        if ref is None:
+            ox, oy, front = pose.x, pose.y, pose.theta
+            # the robot's left/right: things to its side, ahead or level, not behind it
+        else:
+            # from the reference's nearest part, not its centre: a table at the head of a long
+            # bed is beside it even though the bed's centre is far along
+            cells = ref.points_m()
+            if len(cells):
+                ox, oy = cells[int(np.argmin(np.hypot(cells[:, 0] - tx, cells[:, 1] - ty)))]
+            else:
+                ox, oy = entity_centre(ref)
+            if ref.orientation_rad is not None:
+                front = ref.orientation_rad
+            else:  # a reference without a front: the viewer's frame (the robot looking at it)
+                cx, cy = entity_centre(ref)
+                front = math.atan2(pose.y - cy, pose.x - cx)
+                if rdt.direction in ("left", "right"):
+                    front = front  # facing the viewer: its left is the viewer's right
+        dx, dy = tx - ox, ty - oy
+        dist = math.hypot(dx, dy)
+        near = math.exp(-dist / 2.5)
+        # ties (several chairs each with a table) go to the one most in view
+        bearing = wrap_angle(math.atan2(ty - pose.y, tx - pose.x) - pose.theta)
+        seen = (1.0 + math.cos(bearing)) / 2 * math.exp(-math.hypot(tx - pose.x, ty - pose.y) / 6.0)
+        view = 0.7 + 0.3 * seen
+        if rdt.direction in ("beside", "between") and ref is not None:
+            fit = (0.3 + 0.7 * seen) * math.exp(-_gap(ref, tar) / 1.0)
+            if rdt.direction == "between":  # two of the reference's kind close to the target
+                others = sorted(_gap(r, tar) for r in self._in_room(entity_room(self.world, tar) or "", ref.name)
+                                if r.id != ref.id)
+                fit *= 0.5 + 0.5 * (math.exp(-others[0] / 0.4) if others else 0.0)
+            return fit
+        if rdt.direction in ("beside", "between", "center") or rdt.direction not in DIRECTION_ANGLES:
+            return near
+        angle = DIRECTION_ANGLES[rdt.direction]
+        if ref is not None and ref.orientation_rad is None and rdt.direction in ("left", "right"):
+            angle = -angle  # the viewer's left of a front-less item
+        want = front + angle
+        agree = math.cos(wrap_angle(math.atan2(dy, dx) - want))
+        return (0.05 + max(agree, 0.0) ** 2) * near * view
+
+    def _target_word(self, plan) -> str:
+        if plan.nodes:
+            return plan.nodes[-1].target if plan.nodes[-1].target != "non" else "table"
+        return "table"
+
+    def _likely_surfaces(self, room: str, word: str) -> list[Entity]:
+        """Furniture of the target's kind in the room, the one most in the robot's view first."""
+        pose = self._pose()
+        items = self._in_room(room, word) or self._in_room(room, "table")
+
+        def rank(e):
+            x, y = entity_centre(e)
+            d = math.hypot(x - pose.x, y - pose.y)
+            bearing = abs(wrap_angle(math.atan2(y - pose.y, x - pose.x) - pose.theta))
+            return -(math.exp(-d / 3.0) * (1.0 + math.cos(bearing)))
+
+        return sorted(items, key=rank)
+
+    def _toward(self, rdt, said_from: Pose2D) -> tuple[float, float] | None:
+        """Where to look from when the robot itself is the reference ("on your right", or an
+        unreferenced target after some steps): a few metres that way from where it was said."""
+        if rdt.reference not in ("robot", "room", "move"):
+            return None
+        turn = DIRECTION_ANGLES.get(rdt.direction, 0.0) / 2  # that side and ahead: the room lies ahead
+        heading = said_from.theta + turn
+        return (said_from.x + 4.0 * math.cos(heading), said_from.y + 4.0 * math.sin(heading))
+
+    def _better_view(self, room: str, toward: tuple[float, float] | None = None) -> None:
+        """Move to the middle of the room — or, given ``toward``, to the free spot of the room
+        nearest that point — and look around."""
+        r = next((r for r in self.world.floorplan.rooms if r.name == room), None)
+        if r is None:
+            return
+        cx, cy = r.polygon_array.mean(axis=0)
+        if toward is not None:
+            occ = self.obstacles.occupancy()
+            lo, hi = r.polygon_array.min(axis=0) + 0.4, r.polygon_array.max(axis=0) - 0.4
+            xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1e-9, 0.2), np.arange(lo[1], hi[1] + 1e-9, 0.2))
+            pts = np.column_stack([xs.ravel(), ys.ravel()])
+            pts = pts[(occ.clearance_at(pts) >= 0.4) & self._reachable(occ, self._pose(), pts)]
+            if len(pts):
+                cx, cy = pts[int(np.argmin(np.hypot(pts[:, 0] - toward[0], pts[:, 1] - toward[1])))]
+        moved = self._step(self.navigator.go_to(self._robot, (float(cx), float(cy))))
+        self._event("better_view", result=moved)
+        self._look_around()
+
+    # ------------------------------------------------------------------ facing the target
+    def _in_view(self, target: Entity, pose: Pose2D | None = None) -> bool:
+        pose = pose or self._pose()
+        x, y = entity_centre(target)
+        local = pose.to_local(np.array([[x, y]]))[0]
+        dist = math.hypot(*local)
+        radius = float(np.hypot(*(entity_polygon(target) - [x, y]).T).max())  # large tables stand farther off
+        return dist <= self.view_distance_m + radius and abs(math.atan2(local[1], local[0])) < HALF_FOV_RAD * 0.8
+
+    def _face(self, target: Entity) -> ExecutionResult:
+        """Drive to a viewing pose of ``target`` (if not already there) and turn to it."""
+        pose = self._pose()
+        cx, cy = entity_centre(target)
+        if not self._in_view(target):
+            last = None
+            for goal in self._viewing_poses(target, pose)[:4]:
+                last = self._step(self.navigator.go_to(self._robot, goal[:2], goal[2]))
+                if last.success or last.status is ExecutionStatus.COLLISION and last.details.get("bumped"):
+                    break
+            if last is not None and not last.success:
+                return last
+        turned = self._step(self.navigator.follower.face_point(self._robot, cx, cy, localizer=self.localizer)
+                            if _accepts_localizer(self.navigator.follower.face_point)
+                            else self.navigator.follower.face_point(self._robot, cx, cy))
+        self._observe_here()
+        return turned
+
+    def _viewing_poses(self, target: Entity, pose: Pose2D) -> list[tuple[float, float, float]]:
+        """Free poses ``standoff_m`` off the furniture's edge, facing its centre, nearest the
+        robot first."""
+        cx, cy = entity_centre(target)
+        poly = entity_polygon(target)
+        occ = self.obstacles.occupancy()
+        room = entity_room(self.world, target)
+        out = []
+        for k in range(16):
+            a = 2 * math.pi * k / 16
+            u = np.array([math.cos(a), math.sin(a)])
+            extent = float(((poly - [cx, cy]) @ u).max())
+            for extra in (0.0, 0.25):
+                r = extent + self.standoff_m + extra
+                x, y = cx + r * u[0], cy + r * u[1]
+                if not occ.is_free(x, y) or float(occ.clearance_at(np.array([[x, y]]))[0]) < 0.35 \
+                        or not self._reachable(occ, pose, np.array([[x, y]]))[0]:
+                    continue
+                here = self.world.floorplan.room_at(x, y)
+                penalty = 0.0 if here is not None and here.name == room else 3.0
+                cost = math.hypot(x - pose.x, y - pose.y) + penalty + extra
+                out.append((cost, (x, y, math.atan2(cy - y, cx - x))))
+                break
+        out.sort(key=lambda c: c[0])
+        return [g for _, g in out]
+
+
+#: the word a person used for the support → the furniture category it suggests
+SUPPORT_CATEGORIES = {"desk": "large table", "dresser": "large table", "counter": "large table",
+                      "sideboard": "large table", "nightstand": "small table", "stand": "small table"}
+
+
+def _size_agreement(support: str | None, target: Entity) -> float:
+    """1 when the said support word ("desk", "nightstand") fits the target's category, 0.4
+    when it suggests the other size of table, 1 when it says nothing about size."""
+    want = SUPPORT_CATEGORIES.get(support or "")
+    if want is None or not target.category or target.category not in ("small table", "large table"):
+        return 1.0
+    return 1.0 if target.category == want else 0.4
+
+
+def _gap(a: Entity, b: Entity) -> float:
+    """Least distance (metres) between two entities' cells (0 when they touch)."""
+    pa, pb = a.points_m(), b.points_m()
+    if len(pa) == 0 or len(pb) == 0:
+        return math.inf
+    from scipy.spatial import cKDTree
+
+    d, _ = cKDTree(pb).query(pa, k=1)
+    return max(0.0, float(d.min()) - (a.grid.resolution_m + b.grid.resolution_m) / 2)
+
+
+def _accepts_localizer(method) -> bool:
+    import inspect
+
+    try:
+        return "localizer" in inspect.signature(method).parameters
+    except (TypeError, ValueError):
+        return False
+
+
+def fetch(world: World, plan, robot, perception: FurnitureSource, policies=None, **params) -> FetchResult:
+    """Run one :class:`FetchTask` (convenience)."""
+    return FetchTask(world, perception, policies, **params).run(robot, plan)
+
+
+__all__ = ["DIRECTION_ANGLES", "FetchResult", "FetchTask", "NodeReport", "fetch"]
