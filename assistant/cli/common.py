@@ -66,6 +66,14 @@ def run_batch(
     return 0
 
 
+def require_text_or_batch(text: str | None, batch: str | None, what: str) -> None:
+    """Refuse both or neither of a TEXT argument and ``--batch FILE``."""
+    if text and batch:
+        raise AssistantError("give either TEXT or --batch FILE, not both")
+    if not text and not batch:
+        raise AssistantError(f"nothing to {what}: give the command as TEXT or use --batch FILE")
+
+
 def parse_pose(text: str) -> tuple[float, float, float]:
     """Parse ``X,Y,HEADING`` (metres, metres, radians) for argparse."""
     parts = [p for p in text.replace(" ", "").split(",") if p]

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, run_batch
+from assistant.cli.common import require_text_or_batch, add_json_flag, emit_json, run_batch
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -43,10 +43,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.errors import AssistantError
     from assistant.executor.trial import FetchRunner
 
-    if args.batch and args.text:
-        raise AssistantError("give either TEXT or --batch FILE, not both")
-    if not args.batch and not args.text:
-        raise AssistantError("nothing to fetch: give the command as TEXT or use --batch FILE")
+    require_text_or_batch(args.text, args.batch, "fetch")
     runner = FetchRunner(grounder=args.grounder)
     if args.batch:
         def handle(request: dict) -> dict:
@@ -64,7 +61,9 @@ def run(args: argparse.Namespace) -> int:
 
         return run_batch(args.batch, handle, json_requests=True)
     if not args.world:
-        raise AssistantError("say which home with --world NAME (see `assistant world --list`)")
+        from assistant.world import world_names
+
+        raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
     view = _Viewer() if args.view else None
     outcome = runner.run(" ".join(args.text), args.world, args.scene, args.perception, args.seed, args.object,
                          on_event=view.on_event if view else None)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, run_batch
+from assistant.cli.common import require_text_or_batch, add_json_flag, emit_json, run_batch
 
 
 def register(subparsers) -> None:
@@ -30,13 +30,9 @@ def register(subparsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from assistant.errors import AssistantError
     from assistant.grounding import CommandParser
 
-    if args.batch and args.text:
-        raise AssistantError("give either TEXT or --batch FILE, not both")
-    if not args.batch and not args.text:
-        raise AssistantError("nothing to parse: give the command as TEXT or use --batch FILE")
+    require_text_or_batch(args.text, args.batch, "parse")
     world = None
     if args.world:
         from assistant.world import load_world

@@ -57,6 +57,17 @@ class BaseGrounder:
                 f"this {type(self).__name__} is not fitted yet; call fit(records, groundings) "
                 "with chunk-grounding labels first (e.g. from read_chunk_groundings)")
 
+    def _start_fit(self, records: Sequence[ChunkRecord],
+                   groundings: Sequence[ChunkGrounding]) -> list[NormalisedChunk]:
+        """Check the training data, set ``vocabulary_`` and return the normalised chunks."""
+        if len(records) != len(groundings):
+            raise ValueError(f"{len(records)} records but {len(groundings)} groundings")
+        if not records:
+            raise ValueError("cannot fit a grounder on no chunks; the label file is empty")
+        chunks = [normalise(r) for r in records]
+        self.vocabulary_ = frozenset(w for c in chunks for w in c.words)
+        return chunks
+
     def ground(self, records: Sequence[ChunkRecord]) -> list[ChunkGrounding]:
         """The grounding of each chunk record.
 

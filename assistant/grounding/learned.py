@@ -23,7 +23,7 @@ from sklearn.linear_model import LogisticRegression
 from sklearn.neural_network import MLPClassifier
 from threadpoolctl import threadpool_limits
 
-from assistant.grounding.base import BaseGrounder, NormalisedChunk, normalise
+from assistant.grounding.base import BaseGrounder, NormalisedChunk
 from assistant.grounding.types import FIELD_ATTRS, FIELDS, ChunkGrounding, ChunkRecord
 
 #: the outlier class: the chunk does not ground this field
@@ -92,12 +92,7 @@ class LearnedGrounder(BaseGrounder):
         raise ValueError(f"unknown model {self.model!r}; known: {', '.join(MODELS)}")
 
     def fit(self, records: Sequence[ChunkRecord], groundings: Sequence[ChunkGrounding]) -> "LearnedGrounder":
-        if len(records) != len(groundings):
-            raise ValueError(f"{len(records)} records but {len(groundings)} groundings")
-        if not records:
-            raise ValueError("cannot fit a grounder on no chunks; the label file is empty")
-        chunks = [normalise(r) for r in records]
-        self.vocabulary_ = frozenset(w for c in chunks for w in c.words)
+        chunks = self._start_fit(records, groundings)
         groundings = list(groundings)
         if self.world_dropout:  # also learn to ground without knowing the home
             extra = [(replace(c, world=None), g) for c, g in zip(chunks, groundings) if c.world is not None]

@@ -57,12 +57,7 @@ class ScoredGrounder(BaseGrounder):
 
     # --- training -----------------------------------------------------------------------------
     def fit(self, records: Sequence[ChunkRecord], groundings: Sequence[ChunkGrounding]) -> "ScoredGrounder":
-        if len(records) != len(groundings):
-            raise ValueError(f"{len(records)} records but {len(groundings)} groundings")
-        if not records:
-            raise ValueError("cannot fit a grounder on no chunks; the label file is empty")
-        chunks = [normalise(r) for r in records]
-        self.vocabulary_ = frozenset(w for c in chunks for w in c.words)
+        chunks = self._start_fit(records, groundings)
         kinds = [g.kind for g in groundings]
         coder = WordCoder()
         self.coder_ = coder
