@@ -132,6 +132,9 @@ class DialogueManager:
         intent = classify(text)
         name = intent.name
         if name == "empty":
+            if text.strip():  # something was typed, but no word in it (e.g. "!!! ???")
+                return self._turn(text, name, "Sorry, I didn't catch any words there. "
+                                  "Say \"help\" for what you can ask me.", start=start)
             return self._turn(text, name, "", "none", "answered", start)
         if name == "stop":
             return self._do_stop(text, start)

@@ -136,3 +136,10 @@ def test_reply_is_fast(services, tmp_path):
     turn = m.handle("bring me the mug from the table to the right of the chair in the bedroom")
     m.close()
     assert turn.seconds < 2.0  # the benchmark measures the median; this only catches blocking
+
+
+def test_text_with_no_words_is_answered_and_a_blank_line_is_silent(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    turn = m.handle("!!! ??? ...")
+    assert turn.action == "answer" and "didn't catch any words" in turn.reply
+    assert m.handle("   ").reply == ""
