@@ -405,7 +405,7 @@ class DepthRenderer:
         target[...] = top[:, None, :, :]
         target += (bottom - top)[:, None, :, :] * weights[None, :, None, None]
         band = inv[r0:r1]
-        with np.errstate(divide="ignore", over="ignore"):  # unfilled edge pixels are cast later
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):  # unfilled edge pixels are cast later
             np.divide(np.float32(1.0), band, out=band)
 
     def render(self, robot_pose: Pose2D, timestamp_s: float = 0.0) -> DepthFrame:
