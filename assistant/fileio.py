@@ -51,3 +51,35 @@ def cache_dir() -> Path:
     path = Path(root)
     path.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def read_cache(path: str | os.PathLike[str], expected: type | tuple[type, ...] | None = None):
+    """The object pickled at ``path`` by :func:`write_cache`, or None to retrain.
+
+    None when the file is missing, unreadable, truncated, written by older code that no longer
+    unpickles, or not of the ``expected`` type; the reason is logged. A trained-model cache
+    never stops the product: the caller retrains and writes it again.
+    """
+    import logging
+    import pickle
+
+    cache = Path(path)
+    if not cache.is_file():
+        return None
+    try:
+        with open(cache, "rb") as handle:
+            obj = pickle.load(handle)
+    except Exception as error:  # stale or damaged cache of any kind: retrain
+        logging.getLogger(__name__).warning("ignoring unreadable model cache %s: %s", cache, error)
+        return None
+    if expected is not None and not isinstance(obj, expected):
+        logging.getLogger(__name__).warning("ignoring model cache %s: holds a %s", cache, type(obj).__name__)
+        return None
+    return obj
+
+
+def write_cache(path: str | os.PathLike[str], obj) -> Path:
+    """Pickle a trained model to ``path`` atomically (read back with :func:`read_cache`)."""
+    import pickle
+
+    return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL))

@@ -17,7 +17,6 @@ fitted model under :func:`~assistant.fileio.cache_dir` keyed by a hash of the co
 from __future__ import annotations
 
 import hashlib
-import pickle
 from collections import Counter, defaultdict
 from pathlib import Path
 
@@ -287,7 +286,7 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
 
     Only one XML file and one CSV file are paired by description number; with several, each
     XML file is paired with the CSV whose name shares its stem, else the first CSV."""
-    from assistant.fileio import atomic_write_bytes, cache_dir
+    from assistant.fileio import cache_dir, read_cache, write_cache
 
     xmls, csvs = _corpus_files(corpus_paths)
     digest = hashlib.sha256(f"generation-v{MODEL_VERSION}".encode())
@@ -295,14 +294,8 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
         digest.update(p.name.encode())
         digest.update(p.read_bytes())
     path = cache_dir() / f"generation-{digest.hexdigest()[:16]}.pkl"
-    if use_cache and path.exists():
-        try:
-            with open(path, "rb") as fh:
-                model = pickle.load(fh)
-            if isinstance(model, GenerationModel):
-                return model
-        except (OSError, pickle.UnpicklingError, EOFError, AttributeError):
-            pass
+    if use_cache and (model := read_cache(path, GenerationModel)) is not None:
+        return model
     from assistant.grounding.labels import read_chunk_groundings
     from assistant.language.corpus import read_corpus
 
@@ -321,5 +314,5 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
             commands.append(type(c)(f"{prefix}{c.number}", c.records, c.groundings, c.source))
     model = GenerationModel().fit(descriptions, commands)
     if use_cache:
-        atomic_write_bytes(path, pickle.dumps(model))
+        write_cache(path, model)
     return model

@@ -12,12 +12,11 @@ from __future__ import annotations
 import hashlib
 import logging
 import os
-import pickle
 from collections.abc import Iterable
 from pathlib import Path
 
 from assistant.errors import AssistantError, UnknownNameError
-from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.fileio import cache_dir, read_cache, write_cache
 from assistant.grounding.combined import CombinedGrounder
 from assistant.grounding.labels import ChunkGroundingFile, attach_structures, read_chunk_groundings
 from assistant.grounding.learned import LearnedGrounder
@@ -109,14 +108,8 @@ def train_grounder(name: str = DEFAULT_GROUNDER, corpus_paths=None, *, use_cache
     grounder = make_grounder(name, **params)
     key = files_key([*csvs, *xmls], f"{name}{sorted(grounder.get_params().items())}")
     cache_file = cache_dir() / f"grounder-{name}-{key}.pickle"
-    if use_cache and cache_file.exists():
-        try:
-            with open(cache_file, "rb") as handle:
-                cached = pickle.load(handle)
-            if isinstance(cached, type(grounder)):
-                return cached
-        except Exception as error:  # stale or truncated cache: retrain
-            log.warning("ignoring unreadable grounder cache %s: %s", cache_file, error)
+    if use_cache and (cached := read_cache(cache_file, type(grounder))) is not None:
+        return cached
     labels = load_labels(csvs, xmls)
     if not labels.commands:
         raise AssistantError(f"no readable rows in {', '.join(map(str, csvs))}: "
@@ -126,5 +119,5 @@ def train_grounder(name: str = DEFAULT_GROUNDER, corpus_paths=None, *, use_cache
     grounder.fit(labels.records, labels.groundings)
     grounder.training_files_ = [str(p) for p in csvs]
     if use_cache:
-        atomic_write_bytes(cache_file, pickle.dumps(grounder, protocol=pickle.HIGHEST_PROTOCOL))
+        write_cache(cache_file, grounder)
     return grounder

@@ -10,12 +10,11 @@ from __future__ import annotations
 
 import hashlib
 import logging
-import pickle
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from assistant.errors import AssistantError
-from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.fileio import cache_dir, read_cache, write_cache
 from assistant.language.chunker import NestedChunker
 from assistant.language.corpus import CorpusReadResult, default_corpus_paths, read_corpora
 from assistant.language.postag import LEXICON_PATH, SemanticPosTagger
@@ -97,17 +96,11 @@ class LanguageModel:
             )
         key = corpus_key(paths)
         cache_file = cache_dir() / f"language-{key}.pickle"
-        if use_cache and cache_file.exists():
-            try:
-                with open(cache_file, "rb") as handle:
-                    model = pickle.load(handle)
-                if isinstance(model, cls):
-                    return model
-            except Exception as error:  # a stale or truncated cache: retrain
-                log.warning("ignoring unreadable model cache %s: %s", cache_file, error)
+        if use_cache and (model := read_cache(cache_file, cls)) is not None:
+            return model
         model = cls.train(read_corpora(paths))
         if use_cache:
-            atomic_write_bytes(cache_file, pickle.dumps(model, protocol=pickle.HIGHEST_PROTOCOL))
+            write_cache(cache_file, model)
         return model
 
     # --- use -------------------------------------------------------------------------------

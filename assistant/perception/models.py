@@ -9,12 +9,11 @@ settings. Deterministic: fixed seeds throughout.
 from __future__ import annotations
 
 import hashlib
-import pickle
 from dataclasses import dataclass
 
 import numpy as np
 
-from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.fileio import cache_dir, read_cache, write_cache
 from assistant.perception.classifiers import FurnitureClassifier, view_subclasses
 from assistant.perception.database import (
     Database,
@@ -71,12 +70,8 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
     keys = [database_key(f"train{i}", items, plan) for i, plan in enumerate(plans)]
     key = hashlib.sha256(repr((keys, method, features, "models-1")).encode()).hexdigest()[:16]
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
-    if path.exists():
-        try:
-            with open(path, "rb") as handle:
-                return pickle.load(handle)
-        except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
-            pass  # stale or damaged cache: retrain
+    if (models := read_cache(path)) is not None:
+        return models
     models = fit_models(training_database(plans, items), method, features)
-    atomic_write_bytes(path, pickle.dumps(models))
+    write_cache(path, models)
     return models

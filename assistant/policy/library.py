@@ -12,12 +12,11 @@ RDT earlier in Table 5-1. ``model(rdt)`` says which model it used.
 from __future__ import annotations
 
 import hashlib
-import pickle
 from dataclasses import dataclass
 from pathlib import Path
 
 from assistant.errors import UnknownNameError
-from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.fileio import cache_dir, read_cache, write_cache
 from assistant.policy.demonstration import load_demonstrations
 from assistant.policy.model import PolicyModel
 from assistant.policy.rdt import RDT, TABLE_RDTS, parse_rdt
@@ -72,21 +71,16 @@ class PolicyLibrary:
             raise UnknownNameError("demonstration directory", str(self.directory), [str(DEFAULT_DIRECTORY)])
         if self.use_cache:
             self.cache_path = cache_dir() / "policy" / f"{self._key()}.pkl"
-            if self.cache_path.is_file():
-                try:
-                    with open(self.cache_path, "rb") as handle:
-                        models = pickle.load(handle)
-                    self.loaded_from_cache = True
-                    return models
-                except Exception:  # a stale or broken cache file: retrain
-                    pass
+            if (models := read_cache(self.cache_path, dict)) is not None:
+                self.loaded_from_cache = True
+                return models
         demos = load_demonstrations(self.directory)
         by_rdt: dict[str, list] = {}
         for demo in demos:
             by_rdt.setdefault(demo.rdt, []).append(demo)
         models = {rdt: PolicyModel(rdt, **self.model_params).fit(group) for rdt, group in sorted(by_rdt.items())}
         if self.use_cache and self.cache_path is not None:
-            atomic_write_bytes(self.cache_path, pickle.dumps(models))
+            write_cache(self.cache_path, models)
         return models
 
     def rdts(self) -> list[str]:
