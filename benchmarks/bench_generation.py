@@ -23,21 +23,16 @@ def main() -> int:
     ap.add_argument("--style", choices=("static", "dynamic"), default="static")
     args = ap.parse_args()
 
-    from assistant.generation import Describer, load_generation_model, oracle_environment, oracle_sighting
+    from assistant.generation import Describer, load_generation_model, oracle_cases
     from assistant.generation.evaluation import SCENES, STUDY_WORLDS
-    from assistant.world import load_world
 
     t0 = time.perf_counter()
     model = load_generation_model()
     load_s = time.perf_counter() - t0
     describer = Describer(model)
     cases = []
-    for name in STUDY_WORLDS:
-        world = load_world(name)
-        for scene in SCENES:
-            env = oracle_environment(world, scene)
-            for obj in world.scene(scene).objects:
-                cases.append((world, env, oracle_sighting(world, scene, obj.name)))
+    for case in oracle_cases(STUDY_WORLDS, SCENES):
+        cases.append((case.world, case.environment, case.sighting))
     first = None
     per_run_medians, all_ms = [], []
     for rep in range(args.repeats):

@@ -26,7 +26,7 @@ __all__ = [
     # lazily imported
     "ALPHA", "Candidate", "Describer", "GenerationModel", "GenerationModelNotFittedError",
     "candidate_nodes", "known_objects", "load_generation_model", "not_found_description",
-    "objective_values", "oracle_environment", "oracle_sighting", "realize", "repeated_phrases",
+    "objective_values", "OracleCase", "oracle_cases", "oracle_environment", "oracle_sighting", "realize", "repeated_phrases",
     "route_nodes", "select_content", "style_for_question",
 ]
 
@@ -39,6 +39,8 @@ _LAZY = {
     "Describer": "assistant.generation.describer",
     "known_objects": "assistant.generation.describer",
     "not_found_description": "assistant.generation.describer",
+    "OracleCase": "assistant.generation.describer",
+    "oracle_cases": "assistant.generation.describer",
     "oracle_environment": "assistant.generation.describer",
     "oracle_sighting": "assistant.generation.describer",
     "style_for_question": "assistant.generation.describer",

@@ -11,11 +11,13 @@ robot's search with perception will produce the same types.
 from __future__ import annotations
 
 import time
+from collections.abc import Iterator
+from typing import NamedTuple
 
 from assistant.errors import AssistantError, UnknownNameError
 from assistant.generation.types import STYLES, GeneratedDescription, ObjectSighting
 
-__all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "known_objects", "not_found_description",
+__all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "known_objects", "not_found_description", "OracleCase", "oracle_cases",
            "oracle_environment", "oracle_sighting", "style_for_question"]
 
 #: questions that ask for the way, not the place ("how do I get to my mug?")
@@ -145,6 +147,31 @@ def oracle_environment(world, scene: str, resolution_m: float = 0.05) -> list:
     from assistant.world import furniture_entities, world_grid
 
     return furniture_entities(world, scene, world_grid(world, resolution_m))
+
+
+class OracleCase(NamedTuple):
+    """One object of one scene, with the oracle environment of that scene."""
+
+    world_name: str  # as given (a packaged name or a world-file path)
+    world: object
+    scene: str
+    obj: object  # the PlacedObject
+    environment: list
+    sighting: ObjectSighting
+
+
+def oracle_cases(world_names, scenes=("original", "modified")) -> Iterator[OracleCase]:
+    """Every object of every scene of the named worlds, read from the world files (the
+    evaluation's and the benchmark's cases); the environment is built once per scene."""
+    from assistant.world import load_world
+
+    for name in world_names:
+        world = load_world(name)
+        for scene in scenes:
+            environment = oracle_environment(world, scene)
+            for obj in world.scene(scene).objects:
+                yield OracleCase(name, world, scene, obj, environment,
+                                 oracle_sighting(world, scene, obj.name))
 
 
 def not_found_description(name: str, rooms: list[str]) -> GeneratedDescription:

@@ -154,11 +154,9 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
              listener: bool = False) -> dict:
     """Compose and score the descriptions; returns ``{"rows": [...], "summary": {...}}``."""
     from assistant.errors import AssistantError
-    from assistant.generation import (Describer, load_generation_model, oracle_environment,
-                                      oracle_sighting, repeated_phrases)
+    from assistant.generation import Describer, load_generation_model, oracle_cases, repeated_phrases
     from assistant.generation.content import entry_heading, support_of
     from assistant.grounding.types import RDT
-    from assistant.world import load_world
 
     describer = Describer(load_generation_model(corpus_paths))
     parser = None
@@ -180,78 +178,73 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         except ImportError as error:
             listener_note = f"not measured: assistant fetch is not available ({error})"
     rows = []
-    for wname in worlds:
-        world = load_world(wname)
-        for scene in SCENES:
-            env = oracle_environment(world, scene)
-            for obj in world.scene(scene).objects:
-                sighting = oracle_sighting(world, scene, obj.name)
-                t0 = time.perf_counter()
-                result = describer.describe(sighting, env, world.floorplan)
-                compose_ms = (time.perf_counter() - t0) * 1000
-                support = support_of(sighting, env)
-                room = world.floorplan.room(support.room)
-                heading = entry_heading(world.floorplan, room.name)
-                text = result.description
-                meant = {n.rdt for n in result.selected if n.kind == "relation"}
-                if parser is not None:
-                    plan = parser.parse(text).plan
-                    stated_room = plan.room
-                    stated_object = plan.object
-                    stated_support = plan.nodes[-1].target if plan.nodes else None
-                    rdts = [r for node in plan.nodes for r in node.rdts]
-                    rdts = [r for r in rdts if not (str(r) == f"room-center-{r.target}"
-                                                    and f"room-center-{r.target}" not in meant)]
-                else:
-                    stated_room = next((n.words["room"] for n in result.selected if n.kind == "room"), None)
-                    stated_object = obj.name
-                    stated_support = support.name
-                    rdts = [RDT.parse(r) for r in sorted(meant)]
-                said_room = any(n.kind == "room" for n in result.selected)
-                problems = []
-                if stated_object != obj.name:
-                    problems.append(f"object read as {stated_object!r}")
-                if said_room and stated_room != room.name:
-                    problems.append(f"room read as {stated_room!r}, is {room.name!r}")
-                if stated_support != support.name:
-                    problems.append(f"support read as {stated_support!r}, is {support.name!r}")
-                checks = []
-                for r in rdts:
-                    ok, why = _check_rdt(r, support, env, room, world.floorplan, heading)
-                    checks.append({"rdt": str(r), "true": ok, "why": why})
-                    if not ok:
-                        problems.append(f"{r}: {why}")
-                same = [e for e in env if e is not support and e.name == support.name
-                        and (not said_room or e.room == room.name)]
-                unique = not any(_holds_for(rdts, e, env, world.floorplan.room(e.room),
-                                            world.floorplan, entry_heading(world.floorplan, e.room))
-                                 for e in same)
-                recovered = meant <= {str(r) for r in rdts}
-                words = [w.strip(",.").lower() for w in text.split()]
-                refs = humans.get((wname, obj.name), [])
-                ours = {f"{r.reference}-{r.direction}" for r in rdts}
-                people = set().union(*[p for _, p in refs]) if refs else set()
-                fetched = None
-                if runner is not None:
-                    try:
-                        outcome = runner.run(text, wname, scene, "oracle", object_name=obj.name)
-                        fetched = {"success": outcome.success, "failure": outcome.data.get("failure")}
-                    except (AssistantError, RuntimeError, ValueError, KeyError) as error:
-                        fetched = {"success": False, "failure": f"error: {error}"}
-                rows.append({
-                    "listener": fetched,
-                    "world": wname, "scene": scene, "object": obj.name, "description": text,
-                    "nodes": result.nodes, "stated": [str(r) for r in rdts],
-                    "true": not problems, "problems": problems, "checks": checks,
-                    "unique": unique, "flagged_ambiguous": result.ambiguous, "recovered": recovered,
-                    "words": len(words), "repeated": repeated_phrases(text),
-                    "bleu2": _bleu2(words, [w for w, _ in refs]),
-                    "human_relation_agreement": (len(ours & people) / len(ours)) if ours and refs else None,
-                    "human_descriptions": len(refs),
-                    "compose_ms": compose_ms,
-                })
-                if log:
-                    log(f"{wname} {scene} {obj.name}: {text}")
+    for wname, world, scene, obj, env, sighting in oracle_cases(worlds, SCENES):
+        t0 = time.perf_counter()
+        result = describer.describe(sighting, env, world.floorplan)
+        compose_ms = (time.perf_counter() - t0) * 1000
+        support = support_of(sighting, env)
+        room = world.floorplan.room(support.room)
+        heading = entry_heading(world.floorplan, room.name)
+        text = result.description
+        meant = {n.rdt for n in result.selected if n.kind == "relation"}
+        if parser is not None:
+            plan = parser.parse(text).plan
+            stated_room = plan.room
+            stated_object = plan.object
+            stated_support = plan.nodes[-1].target if plan.nodes else None
+            rdts = [r for node in plan.nodes for r in node.rdts]
+            rdts = [r for r in rdts if not (str(r) == f"room-center-{r.target}"
+                                            and f"room-center-{r.target}" not in meant)]
+        else:
+            stated_room = next((n.words["room"] for n in result.selected if n.kind == "room"), None)
+            stated_object = obj.name
+            stated_support = support.name
+            rdts = [RDT.parse(r) for r in sorted(meant)]
+        said_room = any(n.kind == "room" for n in result.selected)
+        problems = []
+        if stated_object != obj.name:
+            problems.append(f"object read as {stated_object!r}")
+        if said_room and stated_room != room.name:
+            problems.append(f"room read as {stated_room!r}, is {room.name!r}")
+        if stated_support != support.name:
+            problems.append(f"support read as {stated_support!r}, is {support.name!r}")
+        checks = []
+        for r in rdts:
+            ok, why = _check_rdt(r, support, env, room, world.floorplan, heading)
+            checks.append({"rdt": str(r), "true": ok, "why": why})
+            if not ok:
+                problems.append(f"{r}: {why}")
+        same = [e for e in env if e is not support and e.name == support.name
+                and (not said_room or e.room == room.name)]
+        unique = not any(_holds_for(rdts, e, env, world.floorplan.room(e.room),
+                                    world.floorplan, entry_heading(world.floorplan, e.room))
+                         for e in same)
+        recovered = meant <= {str(r) for r in rdts}
+        words = [w.strip(",.").lower() for w in text.split()]
+        refs = humans.get((wname, obj.name), [])
+        ours = {f"{r.reference}-{r.direction}" for r in rdts}
+        people = set().union(*[p for _, p in refs]) if refs else set()
+        fetched = None
+        if runner is not None:
+            try:
+                outcome = runner.run(text, wname, scene, "oracle", object_name=obj.name)
+                fetched = {"success": outcome.success, "failure": outcome.data.get("failure")}
+            except (AssistantError, RuntimeError, ValueError, KeyError) as error:
+                fetched = {"success": False, "failure": f"error: {error}"}
+        rows.append({
+            "listener": fetched,
+            "world": wname, "scene": scene, "object": obj.name, "description": text,
+            "nodes": result.nodes, "stated": [str(r) for r in rdts],
+            "true": not problems, "problems": problems, "checks": checks,
+            "unique": unique, "flagged_ambiguous": result.ambiguous, "recovered": recovered,
+            "words": len(words), "repeated": repeated_phrases(text),
+            "bleu2": _bleu2(words, [w for w, _ in refs]),
+            "human_relation_agreement": (len(ours & people) / len(ours)) if ours and refs else None,
+            "human_descriptions": len(refs),
+            "compose_ms": compose_ms,
+        })
+        if log:
+            log(f"{wname} {scene} {obj.name}: {text}")
     n = len(rows)
     bleus = [r["bleu2"] for r in rows if r["bleu2"] is not None]
     agree = [r["human_relation_agreement"] for r in rows if r["human_relation_agreement"] is not None]
