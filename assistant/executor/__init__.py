@@ -35,11 +35,12 @@ from assistant.executor.sensing import (
     SensedFurniture,
     make_furniture_source,
 )
+from assistant.executor.sightings import PlacedSighting, place_sightings
 from assistant.executor.trial import FetchRunner, object_visibility
 
 __all__ = [
     "FetchResult", "FetchRunner", "FetchTask", "FurnitureSource", "NodeReport", "OracleFurniture",
-    "PERCEPTION_MODES", "SensedFurniture", "make_furniture_source", "object_visibility",
+    "PERCEPTION_MODES", "PlacedSighting", "SensedFurniture", "place_sightings", "make_furniture_source", "object_visibility",
     "DepthObstacles", "DoorCrossing", "DrivableRobot", "ExecutionResult", "ExecutionStatus", "FloorplanLocalizer",
     "LocalizationUpdate", "Localizer", "MotionLimits", "Navigator", "NoPathError",
     "OccupancyMap", "PathFollower", "PlannedPath", "RoomGraph", "build_occupancy", "door_crossing",
