@@ -12,6 +12,8 @@ from dataclasses import dataclass, replace
 from assistant.errors import AssistantError
 from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
+from assistant.grounding.rooms import first_named_room, named_room_groundings
+from assistant.grounding.said import said_reference_groundings
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
 
@@ -75,7 +77,13 @@ class CommandParser:
         if corrections:
             records = [replace(r, words=tuple(corrections.get(w, w) for w in r.words)) for r in records]
         groundings = self.grounder.ground(records) if records else []
+        # a room the home has, named in so many words, beats the grounder's guess among trained rooms
+        groundings = named_room_groundings(records, groundings, self.world)
+        # a furniture reference no word names ("just ahead of you" → couch) is the listener
+        groundings = said_reference_groundings(records, groundings)
         plan = assemble_plan(tree, groundings)
+        if plan.room is None:  # "the laptop is on the table in the middle of the meeting room"
+            plan.room = first_named_room(records, self.world)
         return records, groundings, plan
 
     def parse(self, text: str) -> ParseResult:

@@ -7,7 +7,10 @@ The chunk tree is walked forward, in the order the words were said:
 * a chunk grounded to a *target* (a FURTP: "on the table") opens one RDT node; the
   reference-direction pairs of the chunks nested in it ("to the right", "behind the couch")
   become that node's pairs, tried in order. A ``move`` pair nested in it ("walk straight until
-  you are at the table") is a step of its own, taken before the node;
+  you are at the table") is a step of its own, taken before the node — when the chunk has a
+  verb; without one ("on the table just ahead of you") it places the target from the robot
+  (a ``robot`` pair); a ``room``/``robot`` chunk that says two sides ("at the back on the
+  left") gives a pair for each;
 * a reference chunk outside any target chunk is a node of its own: ``move``/``room``/``wall``
   /``door`` references give ``…-non`` nodes (dynamic); a ``robot`` or furniture reference
   with no target named ("the fork will be on the right") gives a node whose target is implied —
@@ -28,6 +31,7 @@ from assistant.grounding.vocabulary import (
     FURNITURE_WORDS,
     NO_TARGET,
     canonical_tokens,
+    said_descriptors,
 )
 
 #: direction used when a reference chunk names none (e.g. "go forward to" → move front)
@@ -54,9 +58,33 @@ class _NodeBuilder:
     support: str | None = None
     implied: bool = False
     parent_id: int | None = None
+    descriptors: tuple[str, ...] = ()
 
     def build(self) -> RDTNode:
-        return RDTNode(self.target, tuple(self.pairs), self.support, self.implied)
+        return RDTNode(self.target, tuple(self.pairs), self.support, self.implied, self.descriptors)
+
+
+def _has_verb(tokens) -> bool:
+    """Whether a chunk's own tokens hold a verb (a Penn ``VB*`` tag): "walk until you reach the
+    table" asks for a step, "just ahead of you" only says where."""
+    return any(str(t.pos).upper().startswith("VB") for t in tokens)
+
+
+#: direction words that place a thing in a room or beside the robot (canonical)
+SIDE_WORDS = {"left": "left", "right": "right", "back": "back", "rear": "back", "front": "front"}
+
+
+def said_directions(tokens, far_is_back: bool = False) -> list[str]:
+    """The side words a chunk's own tokens say, canonical, in order ("at the back on the
+    left" → back, left). With ``far_is_back`` (a room reference) "far" ("the far right
+    corner") is the back of the room."""
+    out = []
+    for t in tokens:
+        text = str(t.text).lower()
+        word = "back" if far_is_back and text in ("far", "farthest", "furthest") else SIDE_WORDS.get(text)
+        if word and str(t.pos).upper() in ("DIR", "NN", "JJ", "RB") and word not in out:
+            out.append(word)
+    return out
 
 
 def said_furniture(words: Sequence[str], pos: Sequence[str]) -> str | None:
@@ -95,8 +123,9 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
                 continue
             g = by_id.get(id(item), ChunkGrounding())
             if g.target:
-                node = _NodeBuilder(g.target, support=said_furniture(
-                    [t.text for t in item.own_tokens], [t.pos for t in item.own_tokens]) or g.target)
+                own = [t.text for t in item.own_tokens]
+                node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
+                                    descriptors=said_descriptors(own))
                 if g.reference:
                     node.pairs.append(pair_of(g))
                 visit(item.items, node, id(item))
@@ -105,10 +134,18 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
                 continue
             if g.reference:
                 reference, direction = pair_of(g)
+                if reference == "move" and enclosing is not None and not _has_verb(item.own_tokens):
+                    # "on the table just ahead of you": no step is asked for, the place is said
+                    # from where the robot stands
+                    reference = "robot"
                 if reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
                     builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)]))
                 elif enclosing is not None:
                     enclosing.pairs.append((reference, direction))
+                    if reference in ("room", "robot"):  # "at the back on the left": both hold
+                        for extra in said_directions(item.own_tokens, far_is_back=reference == "room"):
+                            if (reference, extra) not in enclosing.pairs:
+                                enclosing.pairs.append((reference, extra))
                 else:
                     last = builders[-1] if builders else None
                     if last is not None and last.implied and last.parent_id == parent_key:

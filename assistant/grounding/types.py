@@ -129,13 +129,16 @@ class RDTNode:
     A node with no pair (``"the mug is on the table"``) only names its target; its string form
     is then ``room-center-<target>`` — search the target room from its centre — and
     :attr:`referenced` is False. ``support`` is the word the person used for the target
-    (``nightstand``, ``desk``) when it differs from the category word.
+    (``nightstand``, ``desk``) when it differs from the category word. ``descriptors``: the
+    size, shape and kind words said with the target, canonical (``("small", "round")`` for
+    "the little round table"; :data:`~assistant.grounding.vocabulary.DESCRIPTORS`).
     """
 
     target: str
     pairs: tuple[tuple[str, str], ...] = ()
     support: str | None = None
     implied_target: bool = False
+    descriptors: tuple[str, ...] = ()
 
     @property
     def referenced(self) -> bool:
@@ -158,7 +161,8 @@ class RDTNode:
         return {"rdt": str(self), "target": self.target,
                 "pairs": [[r, d] for r, d in self.pairs],
                 "alternatives": [str(r) for r in self.rdts],
-                "support": self.support, "implied_target": self.implied_target}
+                "support": self.support, "implied_target": self.implied_target,
+                "descriptors": list(self.descriptors)}
 
 
 @dataclass

@@ -77,6 +77,20 @@ TABLE_LIKE = frozenset({"table", "nightstand", "desk", "dresser", "counter", "si
 FURNITURE_WORDS: dict[str, str] = {**{w: "table" for w in TABLE_LIKE},
                                    "chair": "chair", "couch": "couch", "bed": "bed"}
 
+#: words said with a furniture word that describe which one ("the round table", "the big
+#: table", "the coffee table") → a canonical descriptor; the executor compares them with what
+#: it perceives (size class, footprint) to choose among several of a kind
+DESCRIPTORS: dict[str, str] = {
+    # size
+    "small": "small", "little": "small", "short": "small", "low": "small", "tiny": "small",
+    "big": "large", "large": "large", "long": "large", "huge": "large", "tall": "large",
+    # shape
+    "round": "round", "circular": "round", "square": "square", "hexagon": "hexagon",
+    "hexagonal": "hexagon", "six-sided": "hexagon",
+    # the kind of table, as furniture catalogues name it
+    "coffee": "coffee", "dinner": "dinner", "dining": "dinner", "kitchen": "dinner",
+}
+
 #: words a person may say that carry no grounding on their own (for the ``unused`` list)
 FILLERS = frozenset({
     "um", "uh", "er", "erm", "hmm", "well", "so", "okay", "ok", "please", "like", "just",
@@ -84,6 +98,17 @@ FILLERS = frozenset({
     "robot", "hey", "oh", "yeah", "alright", "go", ",", ".", "!", "?", ";", ":",
     "will", "can", "could", "would", "be", "there", "there's", "i", "me", "my", "your", "again",
 })
+
+
+def said_descriptors(words: Sequence[str]) -> tuple[str, ...]:
+    """The canonical descriptors among a chunk's words, in order, without repeats
+    (``["on", "the", "little", "round", "table"]`` → ``("small", "round")``)."""
+    out: list[str] = []
+    for w in words:
+        d = DESCRIPTORS.get(w.strip().lower())
+        if d is not None and d not in out:
+            out.append(d)
+    return tuple(out)
 
 
 def canonical_word(word: str) -> str:

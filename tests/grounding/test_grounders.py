@@ -134,9 +134,12 @@ SCORED_MISSES = {
     ("OBTP", "DT the NN mug VBZ is", ChunkGrounding(object="mug")),
 ])
 def test_corpus_trained_grounders_compose(grounder_cls, corpus_grounders, label, content, expected, request):
-    if grounder_cls is ScoredGrounder and (label, content) in SCORED_MISSES:
-        request.applymarker(pytest.mark.xfail(strict=True, reason=SCORED_MISSES[(label, content)]))
-    assert corpus_grounders[grounder_cls].ground_one(record(label, content)) == expected
+    got = corpus_grounders[grounder_cls].ground_one(record(label, content))
+    if got != expected and grounder_cls is ScoredGrounder and (label, content) in SCORED_MISSES:
+        # a known miss of the nearest-template scorer; which corpus wordings fix it changes with
+        # the corpus, so getting it right is welcome, not a failure
+        pytest.xfail(SCORED_MISSES[(label, content)])
+    assert got == expected
 
 
 def test_corpus_trained_grounder_on_csisl_templates(grounder_cls, corpus_grounders, shared_dir):

@@ -1,0 +1,121 @@
+"""Rooms named in so many words: the home's own room names override a learned room guess.
+
+The grounders learn the *target room* field from labelled commands, so they only know the room
+names the corpus labels (the CSISL homes have a living room and a bedroom). A home the robot
+is told about has more — a hallway, an office, an alcove — and a learned guess for a room
+chunk can only pick among the trained values ("go to the office" → living room). When the
+chunk's own words name one of the home's rooms, that name is what the person meant;
+:func:`named_room_groundings` puts it into the chunk's grounding.
+
+Which chunks: a chunk grounded to a room (its room is replaced by the one named), or a chunk
+that grounds to nothing else — no reference, direction or target — whose words name a room:
+a room target phrase the grounder left empty, or a short command whose room the chunker read
+as the object phrase ("go to [OBTP the bedroom]"); there the object is kept only when its own
+word is said in the chunk too. Chunks of other kinds ("past the bedroom door", a reference to
+a room on the way) are left alone.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
+
+from assistant.grounding.types import ChunkGrounding, ChunkRecord
+from assistant.grounding.vocabulary import canonical_word
+
+__all__ = ["first_named_room", "named_room", "named_room_groundings", "room_names_of"]
+
+#: chunk labels that can say where to go (a room *target* phrase, outside or inside a room, the
+#: object phrase and its "in the hallway");
+#: a room named in a reference phrase (ORMRP "past the kitchen") is a landmark, not the target
+ROOM_TARGET_LABELS = frozenset({"ORMTP", "IRMTP", "OBTP", "OBRP"})
+
+
+def room_names_of(world) -> list[str]:
+    """The room names of a :class:`~assistant.world.World` (lower case), longest first."""
+    if world is None:
+        return []
+    names = {r.name.strip().lower() for r in world.floorplan.rooms}
+    return sorted(names, key=lambda n: (-len(n.split()), n))
+
+
+#: words before a room name that make it the way, not the goal ("down the hallway", "the end of
+#: the hallway", "out of the kitchen", "past the office")
+PATH_WORDS = frozenset({"down", "up", "along", "through", "across", "past", "of", "from", "out",
+                        "via", "leave", "exit", "around", "by"})
+#: words passed over when looking for the word before a room name
+SKIPPED_BEFORE = frozenset({"the", "a", "an", "this", "that", "my", "your", "our", "uh", "um", "er", "erm"})
+#: words after a room name that make it a landmark on the way ("past the bedroom door")
+LANDMARK_WORDS = frozenset({"door", "doors", "doorway", "entrance", "opening", "wall", "walls"})
+
+
+def named_room(words: Sequence[str], rooms: Iterable[str], path_words: frozenset[str] = PATH_WORDS) -> str | None:
+    """The room of ``rooms`` said first in ``words`` (case-insensitive, multi-word names as
+    given; "bed room" also matches "bedroom"); a name followed by a landmark word ("the
+    bedroom door") or said as the way ("down the hallway") does not count. None when no room
+    is named as a goal."""
+    said = [w.strip().lower() for w in words if w.strip()]
+    found: list[tuple[int, int, str, int]] = []  # (start, -length, room, end)
+    for room in rooms:
+        parts = room.split()
+        n = len(parts)
+        for i in range(len(said) - n + 1):
+            if said[i:i + n] == parts:
+                found.append((i, -n, room, i + n))
+        if n == 1:  # said as two or three words ("bed room")
+            for i in range(len(said)):
+                for j in range(i + 2, min(len(said), i + 3) + 1):
+                    if "".join(said[i:j]) == room:
+                        found.append((i, -(j - i), room, j))
+    found = [f for f in found if (f[3] >= len(said) or said[f[3]] not in LANDMARK_WORDS)
+             and _word_before(said, f[0]) not in path_words]
+    return min(found)[2] if found else None
+
+
+def _word_before(said: Sequence[str], start: int) -> str | None:
+    """The word before position ``start``, skipping determiners, possessives and fillers."""
+    i = start - 1
+    while i >= 0 and said[i] in SKIPPED_BEFORE:
+        i -= 1
+    return said[i] if i >= 0 else None
+
+
+def _says_object(words: Sequence[str], obj: str) -> bool:
+    said = {canonical_word(w) for w in words}
+    return all(canonical_word(part) in said for part in obj.split())
+
+
+def named_room_groundings(records: Sequence[ChunkRecord], groundings: Sequence[ChunkGrounding],
+                          world) -> list[ChunkGrounding]:
+    """``groundings`` with the rooms the chunks name in so many words (see the module doc);
+    unchanged when ``world`` is None."""
+    rooms = room_names_of(world)
+    if not rooms:
+        return list(groundings)
+    out = []
+    for record, g in zip(records, groundings):
+        room = named_room(record.words, rooms)
+        if room is None or g.room == room:
+            out.append(g)
+        elif g.room is not None:
+            out.append(replace(g, room=room))
+        elif record.label in ROOM_TARGET_LABELS and g.reference is None and g.direction is None \
+                and g.target is None:
+            obj = g.object if g.object is not None and _says_object(record.words, g.object) else None
+            out.append(replace(g, room=room, object=obj))
+        else:
+            out.append(g)
+    return out
+
+
+def first_named_room(records: Sequence[ChunkRecord], world) -> str | None:
+    """The first of the home's rooms named in any chunk (landmarks excepted) — the target room
+    of a command that names its room only inside a place phrase ("the laptop is on the table in
+    the middle of the meeting room"); None without a world or a named room."""
+    rooms = room_names_of(world)
+    for record in records:
+        # "the middle of the meeting room" names its goal with "of"
+        room = named_room(record.words, rooms, PATH_WORDS - {"of"}) if rooms else None
+        if room is not None:
+            return room
+    return None

@@ -1,0 +1,70 @@
+"""Rooms named in so many words override the grounder's guess among the trained room values."""
+
+from __future__ import annotations
+
+import pytest
+
+from assistant.grounding import ChunkGrounding, ChunkRecord, CommandParser, CombinedGrounder, ScoredGrounder
+from assistant.grounding.rooms import named_room, named_room_groundings, room_names_of
+
+
+def test_named_room_finds_the_first_room_said():
+    rooms = ["living room", "meeting room", "bedroom", "hallway", "office"]
+    assert named_room("go to the office".split(), rooms) == "office"
+    assert named_room("Go to the Living Room".split(), rooms) == "living room"
+    assert named_room("go into the bed room".split(), rooms) == "bedroom"
+    assert named_room("walk past the bedroom door and go into the office".split(), rooms) == "office"
+    assert named_room("go into the bedroom past the office".split(), rooms) == "bedroom"
+    assert named_room("go to the room on the right".split(), rooms) is None
+    # the way is not the goal
+    assert named_room("go down the hallway and turn right into the living room".split(), rooms) == "living room"
+    assert named_room("walk to the end of the uh hallway".split(), rooms) is None
+    assert named_room([], rooms) is None
+
+
+def test_room_names_longest_first(all_worlds):
+    names = room_names_of(all_worlds["two-bedrooms-house"])
+    assert names.index("living room") < names.index("bedroom")
+    assert room_names_of(None) == []
+
+
+def test_groundings_take_the_named_room(all_worlds):
+    world = all_worlds["two-bedrooms-house"]
+    records = [ChunkRecord("ORMTP", ("go", "to", "the", "office"), ("VB", "TO", "DT", "RM")),
+               ChunkRecord("ORMTP", ("go", "to", "the", "hallway"), ("VB", "TO", "DT", "RM")),
+               ChunkRecord("OBTP", ("the", "bedroom"), ("DT", "RM")),
+               ChunkRecord("FURRP", ("next", "to", "the", "bedroom", "door"), ("JJ", "TO", "DT", "RM", "STR")),
+               ChunkRecord("IRMRP", ("turn", "toward", "the", "office"), ("VB", "IN", "DT", "RM"))]
+    guessed = [ChunkGrounding(room="living room"), ChunkGrounding(), ChunkGrounding(object="mug"),
+               ChunkGrounding(reference="door", direction="beside"), ChunkGrounding(reference="move", direction="front")]
+    fixed = named_room_groundings(records, guessed, world)
+    assert fixed[0].room == "office"  # a wrong guess among trained rooms is replaced
+    assert fixed[1].room == "hallway"  # an empty room phrase gets the room it names
+    assert fixed[2] == ChunkGrounding(room="bedroom")  # "go to [OBTP the bedroom]": no mug was said
+    assert fixed[3] == guessed[3] and fixed[4] == guessed[4]  # landmarks and steps stay
+    assert named_room_groundings(records, guessed, None) == guessed
+
+
+@pytest.fixture(scope="module")
+def language():
+    from assistant.language import LanguageModel
+
+    return LanguageModel.load()
+
+
+@pytest.mark.parametrize("grounder", [ScoredGrounder, CombinedGrounder], ids=lambda c: c.__name__)
+def test_go_to_each_room_of_every_home(grounder, language, corpus_labels, all_worlds):
+    fitted = grounder().fit(corpus_labels.records, corpus_labels.groundings)
+    for world in all_worlds.values():
+        parser = CommandParser(language, fitted, world)
+        for room in world.floorplan.rooms:
+            for text in (f"go to the {room.name}", f"Go into the {room.name}, the mug is on the table.",
+                         f"the mug is in the {room.name}"):
+                assert parser.parse(text).plan.room == room.name, (world.name, text)
+
+
+def test_a_room_named_only_in_a_place_phrase_is_the_target_room(language, corpus_labels, all_worlds):
+    fitted = CombinedGrounder().fit(corpus_labels.records, corpus_labels.groundings)
+    parser = CommandParser(language, fitted, all_worlds["hk-studio"])
+    plan = parser.parse("The laptop is on the big table in the middle of the meeting room.").plan
+    assert plan.room == "meeting room" and plan.object == "laptop"
