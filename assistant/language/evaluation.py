@@ -36,6 +36,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--folds", type=int, default=10,
                         help="cross-validation folds on the training corpus (0 to skip; default 10)")
     parser.add_argument("--top", type=int, default=8, help="confusions to list per set (default 8)")
+    parser.add_argument("--consistency", action="append", metavar="PATH",
+                        help="instead of (a)/(b): measure how consistent the annotation of PATH is "
+                             "with itself (context-majority ceilings, repeated n-grams, identical "
+                             "descriptions, conventions) and, unless --folds 0, cross-validate the "
+                             "chunker within PATH (repeatable)")
 
 
 def default_test_paths() -> list[Path]:
@@ -150,9 +155,12 @@ def run(args: argparse.Namespace) -> int:
 
     from assistant.cli.common import emit_json, print_table
     from assistant.errors import AssistantError
+    from assistant.language.consistency import errors_by_construction
     from assistant.language.corpus import default_corpus_paths, read_corpora, read_corpus
     from assistant.language.pipeline import LanguageModel
 
+    if getattr(args, "consistency", None):
+        return _run_consistency(args)
     train_paths = [Path(p) for p in args.corpus] if args.corpus else default_corpus_paths()
     if not train_paths:
         raise AssistantError("no training corpus: corpus/*.xml is empty; give --corpus PATH")
@@ -214,6 +222,9 @@ def run(args: argparse.Namespace) -> int:
         for label, conf in (("POS", r["_pos_confusions"]), ("chunk", r["_chunk_confusions"])):
             top = conf.most_common(args.top)
             print(f"  {label:5s} " + ("; ".join(f"{g} → {p} ×{n}" for (g, p), n in top) or "none"))
+        print("  chunk errors by construction (share of words): " + "; ".join(
+            f"{name} ×{n} ({_pct(n / r['words'])})"
+            for name, n in errors_by_construction(r["_chunk_confusions"])))
         cov = r.get("coverage")
         if cov:
             print(f"  not in the training corpus: {_pct(cov['unseen_path_word_share'])} of words "
@@ -227,12 +238,78 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _run_consistency(args: argparse.Namespace) -> int:
+    """``--consistency PATH``: the self-consistency report of each file (see
+    :mod:`assistant.language.consistency`) and its within-file k-fold CV figure."""
+    import time
+
+    from assistant.cli.common import emit_json, print_table
+    from assistant.errors import AssistantError
+    from assistant.language.consistency import consistency_report
+    from assistant.language.corpus import read_corpus
+
+    missing = [p for p in args.consistency if not Path(p).exists()]
+    if missing:
+        raise AssistantError(f"no such corpus file: {', '.join(missing)}; give CSISL-format XML "
+                             "files with --consistency PATH")
+    reports = {}
+    for path in args.consistency:
+        read = read_corpus(path)
+        trees = [t for t in read.trees() if t.words]
+        if not trees:
+            raise AssistantError(f"{path}: no readable descriptions to measure")
+        report = consistency_report(trees)
+        if args.folds and args.folds > 1:
+            started = time.perf_counter()
+            cv = _cross_validate(trees, args.folds)
+            report["cross_validation"] = {k: v for k, v in cv.items() if not k.startswith("_")}
+            report["cross_validation"]["seconds"] = time.perf_counter() - started
+        reports[str(path)] = report
+    if args.json:
+        emit_json({"consistency": reports})
+        return 0
+    for path, r in reports.items():
+        print(f"{path}: {r['descriptions']} descriptions, {r['words']} words")
+        print_table(
+            [(f"±{w['k']}", w["contexts"], _pct(w["ceiling"]), _pct(w["repeated_word_share"]),
+              _pct(w["repeated_agreement"]), _pct(l["accuracy"]))
+             for w, l in zip(r["window_ceiling"], r["leave_one_out_context"])],
+            ["context (words+POS)", "contexts", "ceiling (in-sample majority)",
+             "words in repeated contexts", "majority agreement there",
+             "leave-one-out context majority"],
+        )
+        print("repeated n-grams (with POS), share of occurrences labelled as the n-gram's "
+              "majority: " + "; ".join(f"{g['n']}-grams {_pct(g['agreement'])} of "
+                                       f"{g['occurrences']}" for g in r["ngram_agreement"]))
+        d = r["duplicates"]
+        print(f"identical descriptions: {d['groups']} groups ({d['descriptions']} descriptions), "
+              f"{d['identical_pairs']}/{d['pairs']} pairs labelled identically, pairwise "
+              f"per-word agreement {_pct(d['pairwise_word_agreement'])}")
+        cv = r.get("cross_validation")
+        if cv:
+            print(f"within-file {cv['folds']}-fold CV (POS tagger + chunker trained on the other "
+                  f"folds): POS {_pct(cv['pos_accuracy'])}, chunk {_pct(cv['chunk_accuracy'])} "
+                  f"(gold POS {_pct(cv['chunk_accuracy_gold_pos'])}), exact "
+                  f"{_pct(cv['chunk_exact_match'])}, {cv['seconds']:.0f} s")
+        print("conventions (label choices counted):")
+        for name, counts in r["conventions"].items():
+            total = sum(counts.values()) or 1
+            print(f"  {name}: " + ", ".join(f"{k} {v} ({_pct(v / total)})"
+                                            for k, v in list(counts.items())[:5]))
+        print()
+    return 0
+
+
 def _pct(value: float) -> str:
     return f"{100 * value:.1f}%"
 
 
 def _public(result: dict, top: int) -> dict:
+    from assistant.language.consistency import errors_by_construction
+
     out = {k: v for k, v in result.items() if not k.startswith("_")}
+    out["errors_by_construction"] = [{"construction": name, "count": n} for name, n in
+                                     errors_by_construction(result["_chunk_confusions"])]
     out["pos_confusions"] = [{"gold": g, "predicted": p, "count": n}
                              for (g, p), n in result["_pos_confusions"].most_common(top)]
     out["chunk_confusions"] = [{"gold": g, "predicted": p, "count": n}

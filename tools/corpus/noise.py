@@ -20,13 +20,18 @@ START_FILLERS = [("um/IGN", 5), ("uh/IGN", 5), ("okay/IGN", 3), ("ok/IGN", 2), (
                  ("well/RB", 1), ("okay/IGN so/IN", 1), ("uh/IGN okay/IGN", 1), ("please/IGN", 1),
                  ("robot/WHO please/IGN", 1), ("hey/IGN robot/WHO", 1), ("robot/WHO um/IGN", 1),
                  ("uh/IGN robot/WHO", 1), ("okay/IGN so/IN robot/WHO", 1), ("um/IGN so/IN", 1), ("oh/IGN", 1),
-                 ("ah/IGN okay/IGN", 1), ("umm/IGN", 1), ("uhh/IGN", 1)]
+                 ("ah/IGN okay/IGN", 1), ("umm/IGN", 1), ("uhh/IGN", 1),
+                 # a robot with a name: the addressee is WHO wherever it is said
+                 ("brian/WHO", 6), ("ok/IGN brian/WHO", 2), ("uh/IGN brian/WHO", 2), ("um/IGN brian/WHO", 1),
+                 ("alright/IGN brian/WHO", 1), ("okay/IGN so/IN brian/WHO", 1), ("brian/WHO please/IGN", 1)]
 IMPERATIVE_LEADS = [("you/PRP need/VBP to/TO", 3), ("you/PRP want/VBP to/TO", 2), ("it/PRP needs/VBZ to/TO", 1),
                     ("he/PRP needs/VBZ to/TO", 1), ("i/PRP need/VBP you/PRP to/TO", 2), ("you/PRP 're/VBP gon/VBR na/VBR", 1),
                     ("you/PRP should/MD", 1), ("you/PRP have/VBP to/TO", 1), ("i/PRP want/VBP you/PRP to/TO", 1),
                     ("first/RB", 1), ("just/RB", 2), ("so/IN first/RB", 1), ("he/PRP should/MD", 1),
                     ("he/PRP 's/VBZ gon/VBR na/VBR", 1), ("tell/VB him/PRP to/TO", 1), ("i/PRP 'd/MD like/VB you/PRP to/TO", 1),
-                    ("can/MD you/PRP", 1), ("could/MD you/PRP please/IGN", 1)]
+                    ("can/MD you/PRP", 1), ("could/MD you/PRP please/IGN", 1),
+                    ("brian/WHO needs/VBZ to/TO", 2), ("brian/WHO should/MD", 1), ("brian/WHO you/PRP need/VBP to/TO", 1),
+                    ("he/PRP needs/VBZ to/TO", 1), ("you/PRP wan/VBR na/VBR", 1), ("the/DT robot/WHO should/MD", 1)]
 HEDGES = [("i/PRP think/VBP", 5), ("i/PRP believe/VBP", 3), ("i/PRP guess/VBP", 1),
           ("if/IN i/PRP remember/VBP", 1), ("i/PRP 'm/VBP pretty/RB sure/JJ", 1),
           ("i/PRP 'm/VBP not/RB sure/JJ but/CC", 1)]
@@ -63,14 +68,14 @@ def top_level(segs: list[str], rng: random.Random, kind: str) -> list[str]:
             segs.insert(obtp, _pick(rng, PERS_TOP))
     if rng.random() < 0.14 and len(segs) > 1:
         segs.insert(rng.randrange(1, len(segs)), _pick(rng, MID_FILLERS))
-    if rng.random() < 0.10 and re.match(r"^(\[ORMTP )*[a-z]+/VB ", segs[0]):
+    if rng.random() < 0.13 and re.match(r"^(\[ORMTP )*[a-z]+/VB ", segs[0]):
         segs.insert(0, _pick(rng, IMPERATIVE_LEADS))
     r = rng.random()
-    if r < 0.09:
+    if r < 0.03:
         segs.insert(0, _pick(rng, HEDGES))
-    elif r < 0.11:
+    elif r < 0.05:
         segs.insert(0, "[CONF " + _pick(rng, HEDGES) + "]")
-    if rng.random() < 0.32:
+    if rng.random() < 0.40:
         segs.insert(0, _pick(rng, START_FILLERS))
     if rng.random() < 0.05:
         segs.append(_pick(rng, END_WORDS))

@@ -283,3 +283,30 @@ IRMRP_NESTED = [
     ("[IRMRP when/WRB you/PRP enter/VB]", 1), ("[IRMRP once/WRB you/PRP 're/VBP in/IN the/DT room/RM]", 1),
     ("[IRMRP right/RB as/IN you/PRP go/VB in/IN]", 1),
 ]
+
+# ------------------------------------------------------------------ shorter and longer descriptions
+# (real speakers often stop after the route or the furniture, or say the room first as a
+# sentence of its own and the place later; the object is then said twice)
+
+#: the room said first as a sentence of its own (the object phrase spans the room phrase)
+OBTP_ROOM_FIRST = [
+    ("[OBTP {obj} is/VBZ {room}]", 8), ("[OBTP {obj} is/VBZ located/VBN {room}]", 1),
+    ("[OBTP {obj} 's/VBZ {room}]", 1), ("[OBTP it/PRP 's/VBZ {room}]", 2), ("[OBTP {obj} was/VBD {room}]", 1),
+    ("[OBTP {obj} should/MD be/VB {room}]", 1), ("[OBTP its/PRP {room}]", 1),
+]
+#: the second object sentence, after the moves inside the room: {furtp} the goal FURTP
+OBTP_SECOND = [
+    ("[OBTP it/PRP 's/VBZ {furtp}]", 6), ("[OBTP it/PRP is/VBZ {furtp}]", 3), ("[OBTP its/PRP {furtp}]", 2),
+    ("[OBTP {obj} is/VBZ {furtp}]", 3), ("[OBTP it/PRP should/MD be/VB {furtp}]", 2),
+    ("[OBTP you/PRP 'll/MD find/VB it/PRP {furtp}]", 1), ("[OBTP it/PRP will/MD be/VB {furtp}]", 1),
+    ("[OBTP it/PRP 's/VBZ sitting/VBG {furtp}]", 1), ("[OBTP you/PRP should/MD find/VB it/PRP {furtp}]", 1),
+]
+#: a closing sentence after the object phrase (a second OBTP)
+OBTP_CLOSING = [
+    ("[OBTP pick/VB it/PRP up/RP]", 3), ("[OBTP bring/VB it/PRP to/TO me/PRP]", 3), ("[OBTP grab/VB it/PRP]", 1),
+    ("[OBTP bring/VB it/PRP back/RB to/TO me/PRP please/IGN]", 1), ("[OBTP it/PRP 's/VBZ right/RB there/RB]", 1),
+    ("[OBTP you/PRP ca/MD n't/RB miss/VB it/PRP]", 1), ("[OBTP that/DT 's/VBZ {obj}]", 1),
+    ("[OBTP could/MD you/PRP bring/VB it/PRP to/TO me/PRP]", 1),
+]
+#: "look down" before the object: "[OBTP look down] and [OBTP you'll see the mug]"
+OBTP_LOOK = [("[OBTP look/VB down/RB]", 3), ("[OBTP look/VB on/ON it/PRP]", 1), ("[OBTP look/VB at/IN the/DT top/NN]", 1)]
