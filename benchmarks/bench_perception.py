@@ -1,56 +1,252 @@
-"""Perception speed: one 640×480 Kinect frame, depth → detections, end to end.
+"""Perception speed: one depth frame → detections, end to end (``FurnitureDetector.analyse``).
 
-Renders a few views of the apartment with the simulator once, then times
-``FurnitureDetector.analyse`` on them over repeated runs and prints the median per frame and
-per stage (milliseconds). Target: median ≤ 33 ms on the 2-core machine.
+Frames: simulated 640×480 Kinect views of the 16 furniture scenes of Table 3-9 in the four
+study homes (the first ``--views`` viewpoints of each scene, furniture in view, robot mount
+known), and — when ``--realdata PATH`` exists (default ``../shared/realdata``) — the real frames
+of that folder (SUN RGB-D 730×530, NYU 640×480, Kinect v2 512×424, TUM 640×480; no mount: the
+floor is searched for).
 
-    .venv/bin/python benchmarks/bench_perception.py [--repeats N]
+Every frame is run ``--repeats`` times through the current code and, in the same run and
+interleaved with it (so both see the same load), through the code as it was before the speed
+work (``benchmarks/perception_reference.py`` reads it from the git history). Printed per frame set: the median and p90
+wall-clock milliseconds, the median CPU milliseconds of this process (``time.process_time``:
+on a loaded 2-core machine the wall time includes waiting for a core), the per-stage medians,
+the old path's medians and the old/new ratios, whether both paths detect the same categories,
+and the load average before and after. Target: median ≤ 33 ms per 640×480 frame.
+
+    .venv/bin/python benchmarks/bench_perception.py [--repeats 5] [--views 2]
+        [--realdata PATH] [--no-reference] [--threads]
+
+``--threads`` instead times the current code with numpy's BLAS and open3d's OpenMP pools
+set to 1 or 2 threads (``threadpoolctl``), interleaved frame by frame: "BLAS 1, OpenMP 1" is
+``OMP_NUM_THREADS=1`` set before numpy loads, "BLAS 2, OpenMP 1" what the product got when
+numpy was loaded before ``assistant.perception`` set ``OMP_NUM_THREADS=1`` for open3d, "BLAS 2,
+OpenMP 2" no setting at all on this 2-core machine (what the product got when the simulator had
+imported open3d first), and the last row the product now (``FrameParams.threads=1``: one
+OpenMP and one BLAS thread while a frame is analysed, whatever the process's setting).
 """
 
 from __future__ import annotations
 
 import argparse
-import math
+import os
 import statistics
+import sys
 import time
+from contextlib import contextmanager
+from pathlib import Path
 
-POSES = [(4.5, 6.0, -math.pi / 2), (3.0, 3.5, -0.6), (5.5, 2.0, 2.2), (5.0, 0.0, math.pi),
-         (-0.5, -3.0, -1.2), (4.0, -5.5, 1.2)]
+HERE = Path(__file__).resolve().parent
+DEFAULT_REALDATA = HERE.parent.parent / "shared" / "realdata"
+sys.path.insert(0, str(HERE))
+from perception_reference import ReferenceUnavailable, load as load_reference  # noqa: E402
+STAGES = ("cloud", "floor", "samples", "features", "classify")
+
+
+def simulated_frames(views: int) -> list:
+    """(label, frame) of the first ``views`` viewpoints of each Table 3-9 scene."""
+    from assistant.perception.scenes import SCENES, viewpoints
+    from assistant.sim.renderer import DepthRenderer
+    from assistant.world import load_world
+
+    worlds, renderers, out = {}, {}, []
+    for number, (name, ids) in enumerate(SCENES, start=1):
+        if name not in worlds:
+            worlds[name] = load_world(name)
+            renderers[name] = DepthRenderer(worlds[name], "original", seed=0)
+        world = worlds[name]
+        items = [f for f in world.scene("original").furniture if f.id in ids]
+        for k, pose in enumerate(viewpoints(world, "original", items)[:views]):
+            out.append((f"scene {number} view {k + 1}", renderers[name].render(pose)))
+    return out
+
+
+def real_frames(root: Path) -> list:
+    """(label, frame) of the real frames of a realdata folder (as the evaluation reads them)."""
+    from assistant.perception.depthfile import load_depth_png
+    from assistant.perception.realdata import FOLDERS
+
+    out = []
+    for folder, (files, k, scale, invalid, _labels) in FOLDERS.items():
+        for name in files:
+            path = root / folder / name
+            if not path.exists():
+                continue
+            frame, _ = load_depth_png(path, k, scale, invalid_values=invalid)
+            if folder == "kinect2_livingroom_esanet":  # flying pixels under 0.5 m
+                frame.depth_m[frame.depth_m < 0.5] = 0.0
+            out.append((f"{folder}/{name}", frame))
+    return out
+
+
+@contextmanager
+def reference_path():
+    """Run the detector's front half and shape descriptor as they were before the speed work."""
+    import assistant.perception.detector as detector_module
+
+    ref = load_reference()
+    ref_frame, ref_features = ref.frame, ref.features
+
+    saved = detector_module.analyse_frame, detector_module.shape_descriptor
+    detector_module.analyse_frame = ref_frame.analyse_frame
+    detector_module.shape_descriptor = ref_features.shape_descriptor
+    try:
+        yield
+    finally:
+        detector_module.analyse_frame, detector_module.shape_descriptor = saved
+
+
+def run_once(detector, frame, use_mount: bool) -> tuple[float, float, dict, dict, list]:
+    """(wall ms, CPU ms, stage wall ms, stage CPU ms, detected categories) of one analyse."""
+    t, c = time.perf_counter(), time.process_time()
+    result = detector.analyse(frame, use_mount=use_mount)
+    wall, cpu = (time.perf_counter() - t) * 1e3, (time.process_time() - c) * 1e3
+    stage_cpu = dict(getattr(result.analysis, "cpu_ms", {}) or {})
+    if stage_cpu:
+        stage_cpu["classify"] = max(0.0, cpu - sum(stage_cpu.values()))
+    return wall, cpu, dict(result.timings_ms), stage_cpu, sorted(d.category for d in result.detections)
+
+
+def median(values) -> float:
+    return statistics.median(values) if values else float("nan")
+
+
+def p90(values) -> float:
+    return sorted(values)[int(0.9 * (len(values) - 1))] if values else float("nan")
+
+
+def bench(detector, frames: list, use_mount: bool, repeats: int, reference: bool) -> dict:
+    new = {"wall": [], "cpu": [], "stage": {}, "stage_cpu": {}}
+    old = {"wall": [], "cpu": []}
+    ratios, differ = [], set()
+    for rep in range(repeats):
+        for i, (label, frame) in enumerate(frames):
+            order = ("new", "old") if (rep + i) % 2 == 0 or not reference else ("old", "new")
+            for which in order:
+                if which == "old" and not reference:
+                    continue
+                if which == "new":
+                    wall, cpu, stage, stage_cpu, cats_new = run_once(detector, frame, use_mount)
+                    new["wall"].append(wall)
+                    new["cpu"].append(cpu)
+                    for k, v in stage.items():
+                        new["stage"].setdefault(k, []).append(v)
+                    for k, v in stage_cpu.items():
+                        new["stage_cpu"].setdefault(k, []).append(v)
+                else:
+                    with reference_path():
+                        wall_old, cpu_old, _, _, cats_old = run_once(detector, frame, use_mount)
+                    old["wall"].append(wall_old)
+                    old["cpu"].append(cpu_old)
+            if reference:
+                ratios.append(old["cpu"][-1] / max(new["cpu"][-1], 1e-6))
+                if cats_new != cats_old:
+                    differ.add(label)
+    return {"new": new, "old": old, "cpu_ratios": ratios, "differ": sorted(differ)}
+
+
+def report(name: str, frames: list, res: dict, reference: bool) -> None:
+    new, old = res["new"], res["old"]
+    print(f"\n{name}: {len(frames)} frames × {len(new['wall']) // max(1, len(frames))} runs")
+    print(f"  current   wall median {median(new['wall']):6.1f} ms  p90 {p90(new['wall']):6.1f} ms   "
+          f"CPU median {median(new['cpu']):6.1f} ms  p90 {p90(new['cpu']):6.1f} ms")
+    parts = [f"{k} {median(new['stage'].get(k, [])):.1f}/{median(new['stage_cpu'].get(k, [])):.1f}"
+             for k in STAGES if k in new["stage"]]
+    print("  stages (wall/CPU median ms): " + ", ".join(parts))
+    if reference:
+        print(f"  old path  wall median {median(old['wall']):6.1f} ms  p90 {p90(old['wall']):6.1f} ms   "
+              f"CPU median {median(old['cpu']):6.1f} ms")
+        print(f"  old/new: wall medians {median(old['wall']) / median(new['wall']):.2f}×, "
+              f"CPU medians {median(old['cpu']) / median(new['cpu']):.2f}×, "
+              f"median per-frame CPU ratio {median(res['cpu_ratios']):.2f}×")
+        same = len(frames) - len(res["differ"])
+        print(f"  same detected categories on {same}/{len(frames)} frames"
+              + (f" (differ: {', '.join(res['differ'])})" if res["differ"] else ""))
+
+
+THREAD_SETTINGS = (  # (name, process thread pools, FrameParams.threads)
+    ("BLAS 1, OpenMP 1", {"blas": 1, "openmp": 1}, None),
+    ("BLAS 2, OpenMP 1", {"blas": 2, "openmp": 1}, None),
+    ("BLAS 2, OpenMP 2", {"blas": 2, "openmp": 2}, None),
+    ("BLAS 2, OpenMP 2, analyse_frame limits both to 1 (product)", {"blas": 2, "openmp": 2}, 1),
+)
+
+
+def threads_comparison(detector, frames: list, use_mount: bool, repeats: int) -> None:
+    """Wall and CPU medians of the current code with numpy's BLAS and open3d's OpenMP pools
+    set to 1 or 2 threads (``threadpoolctl``), the settings interleaved frame by frame so that
+    they share the machine's load."""
+    import dataclasses
+
+    from threadpoolctl import ThreadpoolController
+
+    controller = ThreadpoolController()
+    found = sorted({f"{lib.user_api}:{lib.internal_api}" for lib in controller.lib_controllers})
+    wall = {name: [] for name, *_ in THREAD_SETTINGS}
+    cpu = {name: [] for name, *_ in THREAD_SETTINGS}
+    saved = detector.params
+    try:
+        for rep in range(repeats):
+            for i, (_, frame) in enumerate(frames):
+                k = (rep + i) % len(THREAD_SETTINGS)
+                for name, limits, inner in THREAD_SETTINGS[k:] + THREAD_SETTINGS[:k]:
+                    detector.params = dataclasses.replace(saved, threads=inner)
+                    with controller.limit(limits=limits):
+                        w, c, *_ = run_once(detector, frame, use_mount)
+                    wall[name].append(w)
+                    cpu[name].append(c)
+    finally:
+        detector.params = saved
+    print(f"  thread pools found: {', '.join(found)}")
+    for name, *_ in THREAD_SETTINGS:
+        print(f"  {name}: wall median {median(wall[name]):6.1f} ms  p90 {p90(wall[name]):6.1f} ms   "
+              f"CPU median {median(cpu[name]):6.1f} ms")
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeats", type=int, default=7)
+    parser.add_argument("--repeats", type=int, default=5, help="runs of every frame (default 5)")
+    parser.add_argument("--views", type=int, default=2, help="viewpoints per scene (default 2)")
+    parser.add_argument("--realdata", type=Path, default=DEFAULT_REALDATA,
+                        help="folder of real frames (skipped if absent)")
+    parser.add_argument("--no-reference", action="store_true", help="time the current code only")
+    parser.add_argument("--threads", action="store_true",
+                        help="compare 1 and 2 BLAS / OpenMP threads, interleaved, instead")
     args = parser.parse_args()
-
-    from assistant.geometry import Pose2D
     from assistant.perception import FurnitureDetector
-    from assistant.sim.renderer import DepthRenderer
-    from assistant.world import load_world
 
-    world = load_world("apartment")
-    renderer = DepthRenderer(world, "original", seed=0)
-    frames = [renderer.render(Pose2D(*p)) for p in POSES]
+    load_before = os.getloadavg()
+    sim = simulated_frames(args.views)
+    real = real_frames(args.realdata) if args.realdata.is_dir() else []
     detector = FurnitureDetector()
-    for frame in frames:  # warm-up (imports, caches)
+    reference = not args.no_reference
+    if reference:
+        try:
+            load_reference()
+        except ReferenceUnavailable as exc:
+            print(f"old path not timed: {exc}", file=sys.stderr)
+            reference = False
+    for _, frame in sim:  # warm-up: imports, model cache, catalogue
         detector.analyse(frame)
-    totals, stages = [], {}
-    detections = 0
-    for _ in range(args.repeats):
-        for frame in frames:
-            t = time.perf_counter()
-            result = detector.analyse(frame)
-            totals.append((time.perf_counter() - t) * 1e3)
-            for k, v in result.timings_ms.items():
-                stages.setdefault(k, []).append(v)
-            detections += len(result.detections)
-    print(f"frames: {len(frames)} views × {args.repeats} runs = {len(totals)}; "
-          f"{detections / len(totals):.1f} detections per frame")
-    print(f"end to end: median {statistics.median(totals):.1f} ms, "
-          f"p90 {sorted(totals)[int(0.9 * len(totals))]:.1f} ms (target ≤ 33 ms)")
-    for k, v in stages.items():
-        if k != "total":
-            print(f"  {k:<9} median {statistics.median(v):.1f} ms")
+    for _, frame in real:
+        detector.analyse(frame, use_mount=False)
+    print(f"OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS')!s}; "
+          f"load average before: {' '.join(f'{v:.2f}' for v in load_before)} (1/5/15 min)")
+    if args.threads:
+        print("\nsimulated 640×480 frames, thread settings interleaved:")
+        threads_comparison(detector, sim, True, args.repeats)
+        if real:
+            print("real frames, thread settings interleaved:")
+            threads_comparison(detector, real, False, args.repeats)
+    else:
+        res_sim = bench(detector, sim, True, args.repeats, reference)
+        report("simulated 640×480 frames (robot mount known)", sim, res_sim, reference)
+        if real:
+            res_real = bench(detector, real, False, args.repeats, reference)
+            report(f"real frames ({args.realdata}, floor searched for)", real, res_real, reference)
+    load_after = os.getloadavg()
+    print(f"\nload average after: {' '.join(f'{v:.2f}' for v in load_after)} (1/5/15 min); "
+          f"{os.cpu_count()} cores. Target: median ≤ 33 ms per 640×480 frame.")
     return 0
 
 

@@ -10,21 +10,26 @@ its labels (category, model, true facing and centre in the robot's floor frame).
   facing the robot) × three distances (1.5, 2.5, 3.5 m to the item's centre; nearer than
   1.5 m the camera, 1.05 m up and pitched 15° down, no longer sees the floor in front of a bed);
 * **random** views: distance 1.3–3.8 m, bearing within the field of view, any facing; the
-  training views also scale the model along each axis (by up to ±12 % or ±30 %) and put one
-  of the target objects on half of the tables' tops (objects lie on tables in the homes).
+  training views also scale the model along each axis (by up to ±12 %, ±20 % or ±30 %), put one
+  of the target objects on half of the tables' tops (objects lie on tables in the homes), and
+  in some plans stand a 2.6 m wall 2–30 cm behind the item, on the side away from the robot
+  (furniture stands against walls; what the sample extraction leaves of a wall stays attached).
 
 ``study`` items are the catalogue models of the four homes (meshes from the simulator);
 ``other`` items are :mod:`assistant.perception.instances`. Databases are deterministic for
 their seed and cached under ``cache_dir()/perception`` keyed by a hash of everything they are
-made from (catalogue, instances, the mesh and pipeline sources, the parameters).
+made from (catalogue, instances, the syntax trees of the mesh, noise, camera and pipeline code —
+:func:`code_digest` — and the parameters).
 """
 
 from __future__ import annotations
 
+import ast
 import hashlib
 import inspect
 import io
 import math
+import textwrap
 from dataclasses import dataclass, field, fields
 from importlib import resources
 
@@ -106,10 +111,10 @@ class ItemRenderer:
         corners = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
         return pose.transform_points(corners)
 
-    def _scene(self, scale, extra=None):
+    def _scene(self, scale, extra=None, wall=None):
         import open3d as o3d
 
-        key = (tuple(round(float(v), 6) for v in scale), extra)
+        key = (tuple(round(float(v), 6) for v in scale), extra, wall)
         if getattr(self, "_scene_key", None) != key:
             mesh = o3d.geometry.TriangleMesh(self._mesh)
             mesh.vertices = o3d.utility.Vector3dVector(np.asarray(mesh.vertices) * np.asarray(scale))
@@ -123,6 +128,8 @@ class ItemRenderer:
                 obj.transform(Pose2D(dx, dy, yaw).matrix4())
                 obj.translate((0.0, 0.0, top))
                 parts.append(obj)
+            if wall is not None:  # a wall behind the item: (outward side angle, gap in metres)
+                parts.append(self._wall(mesh, *wall))
             scene = o3d.t.geometry.RaycastingScene()
             for m in parts:
                 scene.add_triangles(o3d.core.Tensor(np.asarray(m.vertices, dtype=np.float32)),
@@ -130,17 +137,33 @@ class ItemRenderer:
             self._scene_key, self._scene_cache = key, scene
         return self._scene_cache
 
+    @staticmethod
+    def _wall(mesh, side_rad: float, gap_m: float, length_m: float = 5.0, height_m: float = 2.6,
+              thickness_m: float = 0.1):
+        """A wall box parallel to one side of the mesh's bounding box (the side whose outward
+        normal points at ``side_rad``, a multiple of 90° in the model frame), ``gap_m`` off it."""
+        import open3d as o3d
+
+        v = np.asarray(mesh.vertices)
+        u = np.array([math.cos(side_rad), math.sin(side_rad)])
+        reach = float(np.max(v[:, :2] @ u)) + gap_m + thickness_m / 2
+        box = o3d.geometry.TriangleMesh.create_box(thickness_m, length_m, height_m)
+        box.translate((-thickness_m / 2, -length_m / 2, 0.0))
+        box.transform(Pose2D(float(u[0] * reach), float(u[1] * reach), side_rad).matrix4())
+        return box
+
     def render(self, item_pose: Pose2D, scale=(1.0, 1.0, 1.0), seed: int = 0,
-               on_top: tuple | None = None) -> DepthFrame:
+               on_top: tuple | None = None, wall: tuple | None = None) -> DepthFrame:
         """A noisy frame with the item at ``item_pose`` (robot frame, the robot at the origin);
-        ``on_top`` = (object name, x, y, yaw) puts a target object on the item's top (model frame).
+        ``on_top`` = (object name, x, y, yaw) puts a target object on the item's top (model
+        frame); ``wall`` = (side angle, gap) stands a 2.6 m wall behind one side of it.
 
         The item stays put in its own frame and the camera moves (the robot's pose in the item
         frame is ``item_pose.inverse()``), so one ray-casting scene serves every unscaled view.
         """
         import open3d as o3d
 
-        scene = self._scene(scale, on_top)
+        scene = self._scene(scale, on_top, wall)
         t = camera_to_world_matrix(self.mount, item_pose.inverse()).astype(np.float32)
         rays = np.empty((len(self._rays), 6), dtype=np.float32)
         rays[:, :3] = t[:3, 3]
@@ -227,16 +250,19 @@ class ViewPlan:
     bearing_max_deg: float = 22.0
     objects: float = 0.0  # chance that a table view has a target object on its top
     height_jitter: float = 1.0  # cap on the height scaling (jitter applies to length and width)
+    wall: float = 0.0  # chance that a random view has a wall behind the item (homes have walls)
+    wall_gap_m: tuple[float, float] = (0.02, 0.3)
 
 
 def _views(item: Item, plan: ViewPlan, rng: np.random.Generator):
-    """(pose of the item in the robot frame, scale, direction_deg, distance, facing, on_top)."""
+    """(pose of the item in the robot frame, scale, direction_deg, distance, facing, on_top,
+    wall)."""
     offset = item.front_offset_rad if item.front_offset_rad is not None else 0.0
     if plan.grid:
         for d in GRID_DISTANCES_M:
             for k in GRID_DIRECTIONS_DEG:
                 facing = wrap_angle(math.pi + math.radians(k))  # k = 0: its front faces the robot
-                yield Pose2D(d, 0.0, facing - offset), (1.0, 1.0, 1.0), float(k), d, facing, None
+                yield Pose2D(d, 0.0, facing - offset), (1.0, 1.0, 1.0), float(k), d, facing, None, None
     objects = _object_names() if plan.objects > 0 else []
     for _ in range(plan.random_per_item):
         d = rng.uniform(*plan.distance_range_m)
@@ -250,8 +276,16 @@ def _views(item: Item, plan: ViewPlan, rng: np.random.Generator):
         if objects and item.category.endswith("table") and rng.random() < plan.objects:
             on_top = (objects[int(rng.integers(len(objects)))], float(rng.uniform(-0.15, 0.15)),
                       float(rng.uniform(-0.15, 0.15)), float(rng.uniform(-math.pi, math.pi)))
-        yield (Pose2D(d * math.cos(b), d * math.sin(b), facing - offset), scale, math.nan, d,
-               wrap_angle(facing), on_top)
+        pose = Pose2D(d * math.cos(b), d * math.sin(b), facing - offset)
+        wall = None
+        if plan.wall and rng.random() < plan.wall:
+            # against a wall on the far side from the robot, as furniture stands in a room: of
+            # the bounding box's four sides, the one facing most directly away from the camera
+            cam = pose.inverse().transform_points(np.zeros((1, 2)))[0]
+            away = math.atan2(-cam[1], -cam[0])
+            side = round(away / (math.pi / 2)) * (math.pi / 2)
+            wall = (float(wrap_angle(side)), float(rng.uniform(*plan.wall_gap_m)))
+        yield pose, scale, math.nan, d, wrap_angle(facing), on_top, wall
 
 
 def _object_names() -> list[str]:
@@ -271,8 +305,8 @@ def render_database(items: list[Item], plan: ViewPlan, params: FrameParams = Fra
         renderer = ItemRenderer(item.mesh())
         seed_base = int.from_bytes(hashlib.sha256(f"{plan.seed}:{item.name}".encode()).digest()[:4], "little")
         rng = np.random.default_rng(seed_base)
-        for v, (pose, scale, direction, dist, facing, on_top) in enumerate(_views(item, plan, rng)):
-            frame = renderer.render(pose, scale, seed=seed_base + v, on_top=on_top)
+        for v, (pose, scale, direction, dist, facing, on_top, wall) in enumerate(_views(item, plan, rng)):
+            frame = renderer.render(pose, scale, seed=seed_base + v, on_top=on_top, wall=wall)
             found = analyse_frame(frame, params)
             if not found.samples:
                 missed += 1
@@ -322,15 +356,45 @@ def _item_sample(samples, footprint: np.ndarray, margin_m: float = 0.15) -> int 
     return best
 
 
+def code_digest(*objects) -> str:
+    """Hash of the *code* of modules, classes or functions: their syntax trees without
+    docstrings, comments, line numbers or formatting, so an edit that changes no behaviour (a
+    comment, a docstring, a reflowed line) keeps the key, and code outside ``objects`` never
+    counts."""
+    h = hashlib.sha256()
+    for obj in objects:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(obj)))
+        h.update(_tree_digest(tree).encode())
+    return h.hexdigest()
+
+
+def _tree_digest(tree: ast.AST) -> str:
+    """sha256 of a syntax tree with its docstrings removed (line numbers never count)."""
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+                and body and isinstance(body[0], ast.Expr)
+                and isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str)):
+            node.body = body[1:] or [ast.Pass()]
+    return hashlib.sha256(ast.dump(tree, annotate_fields=False, include_attributes=False).encode()).hexdigest()
+
+
 def _source_fingerprint() -> str:
-    """Hash of the data and code a database is made from."""
+    """Hash of the data and code a database is made from: the detector's front half, the
+    meshes, the Kinect noise model and the camera geometry, this module's rendering code, and
+    the catalogue and instance files. Only code that renders or analyses the views counts
+    (the rest of the simulator's renderer, for one, does not), compared by syntax tree."""
     from assistant.perception import cloud, features, frame, instances, samples
+    from assistant.robot import frames as robot_frames
     from assistant.sim import meshes, renderer
 
     h = hashlib.sha256(DB_VERSION.encode())
-    for module in (cloud, features, frame, instances, samples, meshes, renderer):
-        h.update(inspect.getsource(module).encode())
-    h.update(inspect.getsource(_views).encode() + inspect.getsource(render_database).encode())
+    h.update(code_digest(cloud, features, frame, instances, samples, meshes, renderer.KinectNoise,
+                         robot_frames.CameraIntrinsics, robot_frames.CameraMount,
+                         robot_frames.pixel_rays, robot_frames.camera_to_world_matrix,
+                         robot_frames.camera_to_base_matrix,
+                         training_intrinsics, ItemRenderer, _views, _object_names,
+                         render_database, _item_sample).encode())
     for pkg, name in (("assistant.world", "catalogue.yaml"), ("assistant.perception", "instances.yaml")):
         h.update((resources.files(pkg) / "data" / name).read_bytes())
     return h.hexdigest()

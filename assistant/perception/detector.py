@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -30,7 +31,12 @@ class Detection:
 
     ``x``, ``y`` (metres) and ``facing`` (radians, None for tables) are in ``frame`` ("world"
     or "camera-floor"); ``cells_xy`` (M, 2) the centres (metres, same frame) of the 0.05 m floor
-    cells it covers; ``partial`` says it runs out of the image (left, right or bottom).
+    cells it covers; ``partial`` says it runs out of the image (left, right or bottom);
+    ``confidence`` is the classifier's (0–1); ``coverage`` (0–1) how much of the item the view
+    showed: the floor area seen over the category's typical footprint, halved for a partial
+    view. Fusion weighs a detection by ``confidence × coverage`` (:attr:`weight`): a glimpse of
+    a couch's arm or a view cut by the image border says less about the item's centre and
+    category than a whole view.
     """
 
     category: str
@@ -43,13 +49,20 @@ class Detection:
     height_m: float
     partial: bool
     frame: str
+    coverage: float = 1.0
+
+    @property
+    def weight(self) -> float:
+        """What this detection counts for in fusion: ``confidence × coverage``."""
+        return float(self.confidence * self.coverage)
 
     def to_dict(self) -> dict:
         return {"category": self.category, "subclass": self.subclass, "x": round(self.x, 3),
                 "y": round(self.y, 3),
                 "facing": None if self.facing is None else round(float(self.facing), 4),
                 "confidence": round(float(self.confidence), 3), "height": round(self.height_m, 3),
-                "cells": int(len(self.cells_xy)), "partial": bool(self.partial)}
+                "cells": int(len(self.cells_xy)), "partial": bool(self.partial),
+                "coverage": round(float(self.coverage), 3)}
 
 
 @dataclass(eq=False)
@@ -86,12 +99,13 @@ class FurnitureDetector:
     a sample taller than ``tall_m`` with under ``min_surface_share`` of its points on upward
     surfaces 0.3–0.75 m high (seat, mattress, table top) is not furniture of any category —
     measured on real frames, these are shelves, wardrobes and water heaters the classifier
-    would otherwise call beds.
+    would otherwise call beds. ``weigh_coverage`` sets each detection's ``coverage`` (how much
+    of the item the view showed; 1 when False), which weighs it in fusion.
     """
 
     def __init__(self, models=None, orientation: str = "plane", params: FrameParams | None = None,
                  min_confidence: float = 0.45, min_height_m: float = 0.3, tall_m: float = 1.3,
-                 min_surface_share: float = 0.05):
+                 min_surface_share: float = 0.05, weigh_coverage: bool = True):
         if orientation not in ORIENTATION_METHODS:
             from assistant.errors import UnknownNameError
 
@@ -107,6 +121,7 @@ class FurnitureDetector:
         self.min_height_m = min_height_m
         self.tall_m = tall_m
         self.min_surface_share = min_surface_share
+        self.weigh_coverage = weigh_coverage
 
     def analyse(self, frame: DepthFrame, use_mount: bool = True) -> DetectionResult:
         """Detections of a frame with the floor and the reason when there are none; never raises
@@ -131,16 +146,19 @@ class FurnitureDetector:
             if not _has_furniture_surface(shape, self.tall_m, self.min_surface_share):
                 dropped += 1  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
                 continue
+            category = category_of(str(sub))
             facing = self._facing(sample, str(sub), analysis.camera_xyz[:2])
-            cx, cy = _centre(sample.points[:, :2], facing, category_of(str(sub)), analysis.camera_xyz[:2])
+            cx, cy = _centre(sample.points[:, :2], facing, category, analysis.camera_xyz[:2])
+            area = len(sample.cells_xy_m) * self.params.samples.grid_m ** 2
+            coverage = view_coverage(area, category, sample.touches_border) if self.weigh_coverage else 1.0
             cells = sample.cells_xy_m
             if pose is not None:
                 cx, cy = pose.transform_points(np.array([[cx, cy]]))[0]
                 cells = pose.transform_points(cells)
                 facing = None if facing is None else wrap_angle(facing + pose.theta)
-            out.append(Detection(category_of(str(sub)), str(sub), float(cx), float(cy), facing,
+            out.append(Detection(category, str(sub), float(cx), float(cy), facing,
                                  float(conf), cells, float(sample.height_m), sample.touches_border,
-                                 frame_name))
+                                 frame_name, coverage))
         t2 = time.perf_counter()
         reason = None if out else f"{dropped} sample(s), none recognised as furniture"
         return DetectionResult(out, analysis, reason, {**analysis.timings_ms,
@@ -200,6 +218,25 @@ def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
     return float(c[0]), float(c[1])
 
 
+def view_coverage(area_m2: float, category: str, partial: bool, floor: float = 0.2) -> float:
+    """How much of an item one view showed (0–1): the floor area its sample covers over the
+    category's typical footprint (capped at 1, at least ``floor``), halved when the sample runs
+    out of the image."""
+    typical = typical_area_m2(category)
+    share = 1.0 if not typical else min(1.0, max(floor, area_m2 / typical))
+    return share * (0.5 if partial else 1.0)
+
+
+@lru_cache(maxsize=None)
+def typical_area_m2(category: str | None) -> float | None:
+    """Median footprint (m², length × width) of the catalogue's models of a category."""
+    from assistant.world import load_catalogue
+
+    areas = [m.length_m * m.width_m for m in load_catalogue().models.values() if m.category == category]
+    return float(np.median(areas)) if areas else None
+
+
+@lru_cache(maxsize=None)
 def typical_depth_m(category: str | None) -> float | None:
     """Median front-to-back depth (metres) of the catalogue's models of a category."""
     from assistant.world import load_catalogue
@@ -214,7 +251,8 @@ def typical_depth_m(category: str | None) -> float | None:
 
 def detections_to_entities(detections: list[Detection], grid: GridMap | None = None,
                            id_prefix: str = "seen") -> list[Entity]:
-    """Short-term entities (name = category word) from detections."""
+    """Short-term entities (name = category word) from detections; an entity's ``confidence``
+    is the detection's :attr:`~Detection.weight` (classifier confidence × view coverage)."""
     from assistant.world.catalogue import category_word
 
     if not detections:
@@ -227,8 +265,9 @@ def detections_to_entities(detections: list[Detection], grid: GridMap | None = N
         cells = grid.world_to_cell(d.cells_xy)
         cells = np.unique(cells[grid.contains_cells(cells)], axis=0)
         out.append(Entity(f"{id_prefix}:{i}", category_word(d.category), EntityKind.SHORT_TERM, grid,
-                          cells, d.facing, category=d.category, confidence=d.confidence,
+                          cells, d.facing, category=d.category, confidence=d.weight,
                           attributes={"subclass": d.subclass, "x": d.x, "y": d.y,
+                                      "classifier_confidence": d.confidence, "coverage": d.coverage,
                                       "height_m": d.height_m, "partial": d.partial}))
     return out
 

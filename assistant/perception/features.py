@@ -138,8 +138,9 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
         out[nbins:2 * nbins] = np.bincount(iz[up], minlength=nbins) / len(points)
     xy = points[:, :2] - points[:, :2].mean(axis=0)
     _, vecs = np.linalg.eigh(np.cov(xy.T))
-    along = xy @ vecs
-    ext = np.percentile(along, 98, axis=0) - np.percentile(along, 2, axis=0)
+    along = np.column_stack([xy @ vecs[:, 0], xy @ vecs[:, 1]])  # no (N, 2) × (2, 2) BLAS call
+    lo, hi = np.percentile(along, [2, 98], axis=0)
+    ext = hi - lo
     out[2 * nbins] = float(np.percentile(z, 99))
     out[2 * nbins + 1] = float(ext.max())
     out[2 * nbins + 2] = float(ext.min())
@@ -156,13 +157,15 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
         _, hv = np.linalg.eigh(np.cov(hxy.T))
         line = hxy @ hv[:, 1]
         across = (points[:, :2] - points[high, :2].mean(axis=0)) @ hv[:, 0]
-        out[2 * nbins + 4] = float(np.percentile(line, 98) - np.percentile(line, 2))
+        line_lo, line_hi = np.percentile(line, [2, 98])
+        out[2 * nbins + 4] = float(line_hi - line_lo)
         out[2 * nbins + 5] = float(np.percentile(np.abs(across), 95))
         out[2 * nbins + 6] = out[2 * nbins + 4] / max(out[2 * nbins + 5], 0.05)
         out[2 * nbins + 7] = out[2 * nbins] - out[2 * nbins + 3]
         # where the tall part stands across the item: at its edge (a chair's back, a couch's,
         # a headboard) or in its middle (a monitor or lamp on a table)
-        mid = (np.percentile(across, 98) + np.percentile(across, 2)) / 2
+        across_lo, across_hi = np.percentile(across, [2, 98])
+        mid = (across_hi + across_lo) / 2
         out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
     return out
 

@@ -117,20 +117,25 @@ def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
 
 
 def _score_boxes(base: Path, result, frame) -> dict:
-    """Each labelled 2D box gets the category of the detection whose centre projects into it."""
+    """Each labelled 2D box gets the category of every detection whose vertical axis (the
+    centre, from the floor to its top, in 0.1 m steps) projects into it: a box drawn by eye
+    around a couch need not hold the projection of its mid-height, which flying pixels above
+    the back can push up."""
     data = json.loads((base / "annotations_visual.json").read_text())
     k = frame.intrinsics
     floor = result.floor
     projected = []
     if floor is not None:
         for d in result.detections:
-            p = _floor_to_camera(floor, np.array([d.x, d.y, d.height_m / 2]))[0]
-            if p[2] > 0.1:
-                projected.append((d, k.fx * p[0] / p[2] + k.cx, k.fy * p[1] / p[2] + k.cy))
+            heights = np.append(np.arange(0.05, max(d.height_m, 0.1), 0.1), d.height_m)
+            axis = np.column_stack([np.full(len(heights), d.x), np.full(len(heights), d.y), heights])
+            p = _floor_to_camera(floor, axis)
+            p = p[p[:, 2] > 0.1]
+            projected.append((d, k.fx * p[:, 0] / p[:, 2] + k.cx, k.fy * p[:, 1] / p[:, 2] + k.cy))
     rows = []
     for obj in data["objects"]:
         x0, y0, x1, y1 = obj["bbox2d"]
-        inside = [d for d, u, v in projected if x0 <= u <= x1 and y0 <= v <= y1]
+        inside = [d for d, u, v in projected if np.any((x0 <= u) & (u <= x1) & (y0 <= v) & (v <= y1))]
         expected = obj["category"].replace("_", " ")
         rows.append({"object": obj["category"], "detected": [d.category for d in inside],
                      "correct": any(d.category == expected for d in inside)})

@@ -56,3 +56,32 @@ def test_feature_choice_is_checked():
     X, y = toy(n=5)
     with pytest.raises(ValueError):
         FurnitureClassifier("gsvm", features="colour").fit(X, y)
+
+
+@pytest.mark.parametrize("method", ["forest", "vote"])
+def test_forest_and_vote_give_probabilities(method):
+    X, y = toy(n=15)
+    clf = FurnitureClassifier(method).fit(X, y)
+    assert (clf.predict(X) == y).mean() > 0.95
+    p = clf.scores(X[:4])
+    assert p.shape == (4, 2) and np.allclose(p.sum(axis=1), 1.0)
+
+
+def test_quick_forest_matches_the_threaded_forest():
+    from sklearn.ensemble import RandomForestClassifier
+
+    from assistant.perception.classifiers import QuickForest
+
+    X, y = toy(n=15)
+    quick = QuickForest(n_estimators=20, random_state=3).fit(X, y)
+    plain = RandomForestClassifier(n_estimators=20, random_state=3).fit(X, y)
+    assert np.allclose(quick.predict_proba(X[:5]), plain.predict_proba(X[:5]))
+    with pytest.raises(NotFittedError):
+        QuickForest().predict_proba(X)
+
+
+def test_unknown_classifier_is_named():
+    from assistant.errors import UnknownNameError
+
+    with pytest.raises(UnknownNameError, match="gsvm"):
+        FurnitureClassifier("knn").fit(*toy(n=5))

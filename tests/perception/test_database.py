@@ -42,3 +42,78 @@ def test_grid_plan_and_other_instances():
     mesh = instance_mesh("slat chair")
     extent = mesh.get_axis_aligned_bounding_box().get_extent()
     assert extent == __import__("pytest").approx([0.48, 0.50, 0.95], abs=0.01)
+
+
+def _twin_a(x):
+    """One docstring."""
+    # a comment
+    return x + 1
+
+
+def _twin_b(x):
+    """Another docstring, longer,
+    over two lines."""
+    return x + 1  # the same code, written differently
+
+
+def _other(x):
+    return x + 2
+
+
+def test_code_digest_ignores_docstrings_and_comments_but_not_code():
+    import ast
+    import inspect
+    import textwrap
+
+    from assistant.perception.database import _tree_digest, code_digest
+
+    def renamed(f):  # the same function name, so only bodies are compared
+        tree = ast.parse(textwrap.dedent(inspect.getsource(f)))
+        tree.body[0].name = "f"
+        return tree
+
+    assert _tree_digest(renamed(_twin_a)) == _tree_digest(renamed(_twin_b))
+    assert _tree_digest(renamed(_twin_a)) != _tree_digest(renamed(_other))
+    assert code_digest(_twin_a) == code_digest(_twin_a) != code_digest(_other)
+
+
+def test_cache_keys_are_the_same_in_another_process():
+    """The trained-model key must not depend on the process (hash seeds, import order): a
+    key that drifted made the detector retrain now and then."""
+    import os
+    import subprocess
+    import sys
+
+    from assistant.perception.models import models_key
+
+    here = models_key()
+    assert models_key() == here
+    code = "from assistant.perception.models import models_key; print(models_key())"
+    env = {**os.environ, "PYTHONHASHSEED": "12345"}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
+                         check=True).stdout.strip()
+    assert out == here
+    assert models_key(method="lsvm") != here
+
+
+def test_a_wall_can_stand_behind_the_item():
+    import math
+
+    from assistant.geometry import Pose2D
+    from assistant.perception.database import ItemRenderer
+
+    item = next(i for i in study_items() if i.name == "round table")
+    renderer = ItemRenderer(item.mesh())
+    pose = Pose2D(2.0, 0.0, 0.0)
+    bare = renderer.render(pose, seed=1).depth_m
+    walled = renderer.render(pose, seed=1, wall=(0.0, 0.1)).depth_m  # wall on the item's +x side
+    # the far floor is hidden: no reading beyond the wall (table radius 0.23 m + 0.1 m gap)
+    assert np.nanmax(np.where(walled > 0, walled, np.nan)) < np.nanmax(np.where(bare > 0, bare, np.nan))
+    plan = ViewPlan(grid=False, random_per_item=3, seed=4, wall=1.0)
+    from assistant.perception.database import _views
+
+    views = list(_views(item, plan, np.random.default_rng(0)))
+    assert all(v[-1] is not None and v[-1][1] >= 0.02 for v in views)
+    for pose, *_, wall in views:  # the wall is on the far side from the robot
+        robot = pose.inverse().transform_points(np.zeros((1, 2)))[0]
+        assert math.cos(wall[0] - math.atan2(robot[1], robot[0])) < 0

@@ -53,3 +53,27 @@ def test_unknown_orientation_method_is_named(tiny_models):
 
     with pytest.raises(UnknownNameError, match="plane"):
         FurnitureDetector(tiny_models, orientation="compass")
+
+
+def test_view_coverage_weighs_whole_views_above_glimpses():
+    from assistant.perception.detector import typical_area_m2, view_coverage
+
+    couch = typical_area_m2("couch")
+    assert couch == pytest.approx(0.73 * 2.06)
+    assert view_coverage(2 * couch, "couch", partial=False) == 1.0
+    assert view_coverage(couch / 2, "couch", partial=False) == pytest.approx(0.5)
+    assert view_coverage(couch / 2, "couch", partial=True) == pytest.approx(0.25)
+    assert view_coverage(0.01, "couch", partial=False) == pytest.approx(0.2)  # never nothing
+
+
+def test_entities_carry_confidence_times_coverage(tiny_models):
+    item = next(i for i in study_items() if i.name == "coffee table")
+    renderer = ItemRenderer(item.mesh(), intrinsics=CameraIntrinsics.kinect_v1())
+    frame = renderer.render(Pose2D(2.3, 0.0, 0.3), seed=2)
+    detector = FurnitureDetector(tiny_models)
+    dets = detector.analyse(frame).detections
+    assert dets and 0 < dets[0].coverage <= 1
+    entity = detector.detect(frame)[0]
+    assert entity.confidence == pytest.approx(dets[0].confidence * dets[0].coverage)
+    assert entity.attributes["coverage"] == pytest.approx(dets[0].coverage)
+    assert "coverage" in dets[0].to_dict()

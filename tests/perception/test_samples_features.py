@@ -86,3 +86,36 @@ def test_shape_descriptor_sees_a_couch_back_along_its_long_side():
     s = shape_descriptor(pts, normals)
     assert s[40] == pytest.approx(0.9, abs=0.03)  # top height
     assert s[44] > 1.8 and s[45] < 0.8  # tall part ~2 m long, item < 0.8 m deep across it
+
+
+def test_a_walls_remains_beside_its_cleared_columns_leave_the_table_against_it():
+    table = box_points(2.0, 0.0, 0.8, 0.8, 0.0, 0.55)
+    # a wall 3 cm behind the table, seen to 1.9 m, spread over two cells (as noise does); only
+    # the far cells' points reach the top rows of the image, so only they are cleared columns
+    wall = np.array([(x, y, z) for x in (2.43, 2.47) for y in np.arange(-1.5, 1.5, 0.02)
+                     for z in np.arange(0.0, 1.9, 0.02)])
+    pts = np.vstack([table, wall])
+    rows = np.full(len(pts), 100.0)
+    rows[(pts[:, 0] > 2.45) & (pts[:, 2] > 1.85)] = 0.0  # only the far cells reach the top rows
+    samples, _ = extract_samples(pts, rows, image_height=240, params=SampleParams(wall_remains_top_m=None))
+    assert len(samples) == 1 and samples[0].height_m > 1.5  # the wall's remains joined the table
+    samples, stats = extract_samples(pts, rows, image_height=240)
+    assert len(samples) == 1 and samples[0].height_m == pytest.approx(0.55, abs=0.02)
+    assert samples[0].footprint_centre_xy == pytest.approx([2.0, 0.0], abs=0.06)
+
+
+def test_furniture_under_the_wall_remains_height_is_kept_against_a_wall():
+    bed = box_points(2.0, 0.0, 2.0, 1.4, 0.0, 0.55)
+    headboard = box_points(2.95, 0.0, 0.08, 1.4, 0.0, 1.1)
+    wall = np.array([(3.05, y, z) for y in np.arange(-2, 2, 0.02) for z in np.arange(0.0, 2.4, 0.02)])
+    samples, _ = extract_samples(np.vstack([bed, headboard, wall]))
+    assert len(samples) == 1 and samples[0].height_m == pytest.approx(1.1, abs=0.02)
+
+
+def test_a_deep_shelf_against_a_wall_keeps_its_tall_part():
+    # only the 0.1 m next to the cleared wall is taken as the wall's remains: a 0.4 m deep shelf
+    # stays a tall thing without a seat (which the detector drops), not a low bed-like remainder
+    shelf = box_points(2.75, 0.0, 0.4, 1.2, 0.0, 1.8)
+    wall = np.array([(3.0, y, z) for y in np.arange(-2, 2, 0.02) for z in np.arange(0.0, 2.4, 0.02)])
+    samples, _ = extract_samples(np.vstack([shelf, wall]))
+    assert len(samples) == 1 and samples[0].height_m == pytest.approx(1.8, abs=0.02)
