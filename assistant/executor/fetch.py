@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from assistant.executor.describe import description_fit
 from assistant.executor.localization import FloorplanLocalizer
 from assistant.executor.navigation import Navigator
 from assistant.executor.obstacles import DepthObstacles
@@ -99,6 +100,7 @@ class FetchResult:
     recovered: bool = False
     details: dict = field(default_factory=dict)
     score_map: tuple | None = None  # (poses (N, 3), scores (N,)) of the last policy search
+    seen: list = field(default_factory=list)  # PlacedSighting: the latest of each object seen
 
     @property
     def success(self) -> bool:
@@ -112,7 +114,7 @@ class FetchResult:
                 "final_pose": None if p is None else [round(p.x, 3), round(p.y, 3), round(p.theta, 4)],
                 "target_furniture": self.target_furniture, "recovered": self.recovered,
                 "sim_seconds": round(self.sim_seconds, 2), "distance_m": round(self.distance_m, 2),
-                "details": self.details}
+                "seen": [s.to_dict() for s in self.seen], "details": self.details}
 
 
 class _Budget(Exception):
@@ -128,6 +130,18 @@ class FetchTask:
     object with ``.model.infer_move_to`` and ``.used``), or None for the geometric fallback
     only. ``view_distance_m``: the final pose stands at most this far from the target's centre;
     ``standoff_m``: gap from the furniture's edge to the robot's centre at the viewing pose.
+    ``weak_fit`` / ``weak_description``: a best pair scoring below the first, or a target
+    fitting the words said about it ("the desk", "the round table") below the second, sends the
+    robot for a better view before it commits. ``survey_range_m`` / ``max_unseen_share``: before its first static node the robot looks
+    around again from further in when more than that share of the room lies farther than that
+    range (metres) from everywhere it has looked (perception finds furniture reliably within a
+    few metres).
+    ``object_detector``: an ``ObjectDetector`` (``assistant/perception/objects.py``) run on every
+    depth frame the task receives (the localizer's frames while driving, the look-around and
+    observe frames); each frame in which it reports objects becomes an ``objects_seen`` event
+    (``seen``: :class:`~assistant.executor.sightings.PlacedSighting` list, ``pose``: the
+    robot's pose at the frame) and the latest sighting of each object is kept in
+    :attr:`FetchResult.seen`. The task reads objects only through this interface.
     """
 
     world: World
@@ -141,6 +155,10 @@ class FetchTask:
     perceive_every_m: float = 1.0
     perceive_every_rad: float = 0.8
     weak_fit: float = 0.1
+    object_detector: object | None = None
+    survey_range_m: float = 4.5
+    weak_description: float = 0.6
+    max_unseen_share: float = 0.5
 
     # ------------------------------------------------------------------ set-up
     def _setup(self, robot) -> None:
@@ -151,7 +169,12 @@ class FetchTask:
         self.obstacles = DepthObstacles(self.world, entities=self.perception.furniture)
         self._last_perceived: Pose2D | None = None
         self._perceive_room: str | None = None
-        listeners = [self.obstacles.add_frame, self._observe_moving]
+        self._seen: dict[str, object] = {}  # object name → latest PlacedSighting
+        self._looked_from: list[Pose2D] = []  # where the robot has looked around
+        self._surveyed = False
+        self._support: str | None = None  # words said about the current target
+        self._descriptors: tuple[str, ...] = ()
+        listeners = [self.obstacles.add_frame, self._observe_moving, self._detect_objects]
         self.localizer = FloorplanLocalizer(self.world, listeners=listeners) if self.localize else None
         self.navigator = Navigator(self.world, self.obstacles.occupancy, localizer=self.localizer, max_replans=10)
         self._last_map = None
@@ -185,19 +208,81 @@ class FetchTask:
         self._last_perceived = pose
         self.perception.observe(frame, pose)
 
+    def _detect_objects(self, frame, pose: Pose2D) -> None:
+        """Run the object detector on ``frame`` (taken at ``pose``); report what it sees."""
+        if self.object_detector is None:
+            return
+        sightings = self.object_detector.detect(frame)
+        if not sightings:
+            return
+        from assistant.executor.sightings import place_sightings
+
+        placed = place_sightings(self.world, self.perception.furniture(), sightings)
+        for item in placed:
+            self._seen[item.name] = item
+        self._event("objects_seen", seen=placed, pose=pose)
+
     def _observe_here(self) -> None:
         frame = self._robot.depth_frame()
         pose = self._pose()
         self.obstacles.add_frame(frame, pose)
         self.perception.observe(frame, pose)
+        self._detect_objects(frame, pose)
 
     def _look_around(self) -> ExecutionResult:
         def on_frame(frame, pose):
             self.obstacles.add_frame(frame, pose)
             self.perception.observe(frame, pose)
+            self._detect_objects(frame, pose)
             return False
 
+        self._looked_from.append(self._pose())
         return self._step(self.navigator.look_around(self._robot, on_frame))
+
+    def _room_points(self, room: str, step_m: float = 0.25) -> np.ndarray:
+        """Floor points (N, 2) of ``room`` on a ``step_m`` lattice."""
+        from assistant.geometry import point_in_polygon
+
+        r = next((r for r in self.world.floorplan.rooms if r.name == room), None)
+        if r is None:
+            return np.zeros((0, 2))
+        poly = r.polygon_array
+        lo, hi = poly.min(axis=0), poly.max(axis=0)
+        xs, ys = np.meshgrid(np.arange(lo[0] + step_m / 2, hi[0], step_m), np.arange(lo[1] + step_m / 2, hi[1], step_m))
+        pts = np.column_stack([xs.ravel(), ys.ravel()])
+        return pts[point_in_polygon(pts, poly)]
+
+    def _unseen(self, points: np.ndarray) -> np.ndarray:
+        """Which ``points`` lie farther than :attr:`survey_range_m` from every pose the robot
+        has looked around from."""
+        unseen = np.ones(len(points), dtype=bool)
+        for p in self._looked_from:
+            unseen &= np.hypot(points[:, 0] - p.x, points[:, 1] - p.y) > self.survey_range_m
+        return unseen
+
+    def _survey(self, room: str, toward: tuple[float, float] | None = None) -> bool:
+        """When more than :attr:`max_unseen_share` of a large room lies beyond perception's
+        range from everywhere the robot has looked (the hk-studio studio seen from its door),
+        look again from the free spot that sees most of the rest (or the one nearest
+        ``toward``, the side the command points to). True when it moved and looked."""
+        pts = self._room_points(room)
+        if len(pts) == 0:
+            return False
+        unseen = self._unseen(pts)
+        if unseen.mean() <= self.max_unseen_share:
+            return False
+        if toward is None:
+            occ = self.obstacles.occupancy()
+            spots = self._room_points(room, 0.5)
+            spots = spots[(occ.clearance_at(spots) >= 0.4) & self._reachable(occ, self._pose(), spots)]
+            if len(spots) == 0:
+                return False
+            rest = pts[unseen]
+            gain = (np.hypot(rest[:, None, 0] - spots[None, :, 0], rest[:, None, 1] - spots[None, :, 1])
+                    <= self.survey_range_m).sum(axis=0)
+            toward = tuple(spots[int(np.argmax(gain))])
+        self._better_view(room, toward)
+        return True
 
     # ------------------------------------------------------------------ the task
     def run(self, robot, plan) -> FetchResult:
@@ -219,6 +304,7 @@ class FetchTask:
         if self.localizer is not None:
             result.details["localizer_updates"] = len(getattr(self.localizer, "updates", []) or [])
         result.details["frames_perceived"] = getattr(self.perception, "frames", None)
+        result.seen = sorted(self._seen.values(), key=lambda p: p.name)
         return result
 
     def _run(self, plan, reports: list[NodeReport], out: dict) -> FetchResult:
@@ -269,6 +355,8 @@ class FetchTask:
         # 3. face the target furniture (or search the likely surfaces)
         recovered = False
         wanted = self._target_word(plan)
+        if plan.nodes:
+            self._describe(plan.nodes[-1])
         if target is None or not self._in_view(target):
             if target is None:
                 candidates = self._likely_surfaces(room, wanted)
@@ -363,19 +451,28 @@ class FetchTask:
         if node.dynamic:
             return self._dynamic_node(rdts[0], room)
         report = NodeReport(str(node), "static", ExecutionStatus.REFERENCE_NOT_FOUND.value)
+        # furniture references first: "between the two chairs" singles a table out better than
+        # "across the room"; the other pairs still weigh in (:meth:`_agreement`)
+        rdts = sorted(rdts, key=lambda r: r.reference in ("robot", "room", "move", "wall", "door"))
         looked_again = False
         said_from = self._pose()  # "on your right" keeps meaning this pose's right after a look elsewhere
-        self._support = getattr(node, "support", None)
+        self._describe(node)
+        if not self._surveyed:  # a room too large to see from its door: look from further in first
+            self._surveyed = True
+            toward = next((t for t in (self._toward(r, said_from) for r in rdts) if t is not None), None)
+            self._survey(room, toward)
         for attempt in range(2):
             for rdt in rdts:
                 report.tried.append([rdt.reference, rdt.direction])
-                pair = self._choose_pair(rdt, room, said_from)
+                others = [r for r in rdts if r is not rdt]
+                pair = self._choose_pair(rdt, room, said_from, others)
                 if pair is None:
                     continue
-                if pair[2] < self.weak_fit and not looked_again:
+                unsure = pair[2] < self.weak_fit or self._described(pair[1]) < self.weak_description
+                if unsure and not looked_again:  # nothing fits well, or not what was said ("the desk")
                     self._better_view(room, self._toward(rdt, said_from))  # unsure: a better view first
                     looked_again = True
-                    pair = self._choose_pair(rdt, room, said_from) or pair
+                    pair = self._choose_pair(rdt, room, said_from, others) or pair
                 reference, target, fit = pair
                 report.reference = None if reference is None else reference.id
                 report.target = target.id
@@ -468,40 +565,80 @@ class FetchTask:
                 out.append(e)
         return out
 
-    def _choose_pair(self, rdt, room: str, pose: Pose2D | None = None):
+    def _choose_pair(self, rdt, room: str, pose: Pose2D | None = None, others=()):
         """The (reference, target, fit) instances that best fit ``rdt`` among the furniture
         seen in ``room``; None when the reference or target is not seen. ``pose``: the robot's
-        pose the command's "your left" is said from (default: now)."""
+        pose the command's "your left" is said from (default: now); ``others``: the node's
+        other RDTs, which the target should fit too (:meth:`_agreement`)."""
         targets = self._in_room(room, rdt.target)
         if not targets:
             return None
         pose = pose or self._pose()
-        if rdt.reference in ("robot", "room") or rdt.reference == "move":
+        if rdt.reference in ("robot", "room", "move", "wall"):
             refs = [None]
         else:
             refs = self._in_room(room, rdt.reference)
             if not refs:
                 return None
+        agreement = self._agreement(others, room, targets, pose)
         best = None
         for ref in refs:
             for tar in targets:
                 if ref is not None and tar.id == ref.id:
                     continue
-                fit = self._fit(rdt, ref, tar, pose) * _size_agreement(getattr(self, "_support", None), tar)
+                fit = self._fit(rdt, ref, tar, pose) * self._described(tar) * agreement.get(tar.id, 1.0)
                 if best is None or fit > best[2]:
                     best = (ref, tar, fit)
         return best
+
+    def _agreement(self, others, room: str, targets: list[Entity], pose: Pose2D) -> dict[str, float]:
+        """Per target id, a factor in [0.3, 1] for how well it also fits the node's other
+        pairs ("next to the chair" and "at the back on the left" both hold for the one meant):
+        per pair, its best fit over that pair's references relative to the best target's, mixed
+        0.3 + 0.7 · share so that a pair cannot veto; pairs whose reference is not seen count
+        for nothing."""
+        out = {t.id: 1.0 for t in targets}
+        for rdt in others or ():
+            if rdt.reference in ("robot", "room", "move", "wall"):
+                refs = [None]
+            else:
+                refs = self._in_room(room, rdt.reference)
+                if not refs:
+                    continue
+            fits = {t.id: max((self._fit(rdt, r, t, pose) for r in refs if r is None or r.id != t.id), default=0.0)
+                    for t in targets}
+            top = max(fits.values(), default=0.0)
+            if top <= 0:
+                continue
+            for tid, f in fits.items():
+                out[tid] *= 0.3 + 0.7 * f / top
+        return out
+
+    def _describe(self, node) -> None:
+        """Remember the words said about ``node``'s target (support word, size/shape words)."""
+        self._support = getattr(node, "support", None)
+        self._descriptors = tuple(getattr(node, "descriptors", ()) or ())
+
+    def _described(self, entity: Entity) -> float:
+        """How well ``entity`` fits the words said about the current target (1 = no words)."""
+        return description_fit(getattr(self, "_support", None), getattr(self, "_descriptors", ()), entity)
 
     def _fit(self, rdt, ref: Entity | None, tar: Entity, pose: Pose2D) -> float:
         """How well ``tar`` stands in ``rdt.direction`` of ``ref`` (the robot when None), in
         (0, 1]: direction agreement times nearness."""
         tx, ty = entity_centre(tar)
+        if rdt.reference == "room" and rdt.direction in DIRECTION_ANGLES:
+            return 0.05 + self._room_side_fit(tar, pose, rdt.direction)
         if rdt.reference == "room" or (ref is None and rdt.direction == "center"):
             # a target named with no reference ("the mug is on the table there"): the one most
             # in the robot's view now — where the steps so far have turned it
             d = math.hypot(tx - pose.x, ty - pose.y)
             bearing = wrap_angle(math.atan2(ty - pose.y, tx - pose.x) - pose.theta)
             return (0.05 + (1.0 + math.cos(bearing)) / 2) * math.exp(-d / 3.0)
+        if rdt.reference == "wall":
+            # "the desk against the left wall": close to a wall that lies on that side of the
+            # robot (as it stood when told), wherever along the wall
+            return 0.05 + self._wall_fit(tar, pose, DIRECTION_ANGLES.get(rdt.direction))
         if ref is None:
             ox, oy, front = pose.x, pose.y, pose.theta
             # the robot's left/right: things to its side, ahead or level, not behind it
@@ -540,8 +677,56 @@ class FetchTask:
         if ref is not None and ref.orientation_rad is None and rdt.direction in ("left", "right"):
             angle = -angle  # the viewer's left of a front-less item
         want = front + angle
-        agree = math.cos(wrap_angle(math.atan2(dy, dx) - want))
-        return (0.05 + max(agree, 0.0) ** 2) * near * view
+        agree = max(math.cos(wrap_angle(math.atan2(dy, dx) - want)), 0.0) ** 2
+        if ref is not None:
+            # and from its centre: where perception merged two pieces (an L of two couches
+            # reported as one), the nearest part alone points anywhere
+            cx, cy = entity_centre(ref)
+            from_centre = max(math.cos(wrap_angle(math.atan2(ty - cy, tx - cx) - want)), 0.0) ** 2
+            agree = 0.5 * (agree + from_centre)
+        return (0.05 + agree) * near * view
+
+    def _room_side_fit(self, entity: Entity, pose: Pose2D, direction: str) -> float:
+        """In [0, 1]: how far toward ``direction`` of its room ``entity`` stands, seen from
+        ``pose`` ("at the back" = the far end along the heading, "on the left" = the left
+        part): its centre's position across the room's extent in the robot's frame."""
+        room = self.world.floorplan.room_at(*entity_centre(entity))
+        if room is None:
+            return 0.5
+        corners = pose.to_local(room.polygon_array)
+        lo, hi = corners.min(axis=0), corners.max(axis=0)
+        fwd, lat = pose.to_local(np.array([entity_centre(entity)]))[0]
+        u = float(np.clip((fwd - lo[0]) / max(hi[0] - lo[0], 1e-6), 0.0, 1.0))  # 1 = far end
+        v = float(np.clip((lat - lo[1]) / max(hi[1] - lo[1], 1e-6), 0.0, 1.0))  # 1 = left side
+        return {"back": u, "front": 1.0 - u, "left": v, "right": 1.0 - v}[direction]
+
+    def _wall_fit(self, entity: Entity, pose: Pose2D, angle: float | None) -> float:
+        """In [0, 1]: how closely ``entity`` stands against a floor-plan wall that faces the
+        robot from ``angle`` (radians from its heading; None = any wall): per wall, the
+        agreement of the perpendicular from the robot to the wall with that side, times
+        exp(-gap / 0.3 m); the best wall counts."""
+        pts = entity.points_m()
+        if len(pts) == 0:
+            return 0.0
+        best = 0.0
+        half = entity.grid.resolution_m / 2
+        for wall in self.world.floorplan.walls:
+            lo, hi = wall.polygon_array.min(axis=0), wall.polygon_array.max(axis=0)
+            gap = float(np.hypot(np.maximum(np.maximum(lo[0] - pts[:, 0], pts[:, 0] - hi[0]), 0.0),
+                                 np.maximum(np.maximum(lo[1] - pts[:, 1], pts[:, 1] - hi[1]), 0.0)).min())
+            near = math.exp(-max(0.0, gap - half) / 0.3)
+            if near < 0.05:
+                continue
+            agree = 1.0
+            if angle is not None:
+                cx, cy = (lo + hi) / 2
+                if hi[0] - lo[0] < hi[1] - lo[1]:  # a wall along y: it lies east or west of the robot
+                    side = 0.0 if cx > pose.x else math.pi
+                else:
+                    side = math.pi / 2 if cy > pose.y else -math.pi / 2
+                agree = max(math.cos(wrap_angle(side - pose.theta - angle)), 0.0) ** 2
+            best = max(best, agree * near)
+        return best
 
     def _target_word(self, plan) -> str:
         if plan.nodes:
@@ -557,14 +742,14 @@ class FetchTask:
             x, y = entity_centre(e)
             d = math.hypot(x - pose.x, y - pose.y)
             bearing = abs(wrap_angle(math.atan2(y - pose.y, x - pose.x) - pose.theta))
-            return -(math.exp(-d / 3.0) * (1.0 + math.cos(bearing)))
+            return -(math.exp(-d / 3.0) * (1.0 + math.cos(bearing)) * self._described(e))
 
         return sorted(items, key=rank)
 
     def _toward(self, rdt, said_from: Pose2D) -> tuple[float, float] | None:
         """Where to look from when the robot itself is the reference ("on your right", or an
         unreferenced target after some steps): a few metres that way from where it was said."""
-        if rdt.reference not in ("robot", "room", "move"):
+        if rdt.reference not in ("robot", "room", "move", "wall"):
             return None
         turn = DIRECTION_ANGLES.get(rdt.direction, 0.0) / 2  # that side and ahead: the room lies ahead
         heading = said_from.theta + turn
@@ -641,20 +826,6 @@ class FetchTask:
                 break
         out.sort(key=lambda c: c[0])
         return [g for _, g in out]
-
-
-#: the word a person used for the support → the furniture category it suggests
-SUPPORT_CATEGORIES = {"desk": "large table", "dresser": "large table", "counter": "large table",
-                      "sideboard": "large table", "nightstand": "small table", "stand": "small table"}
-
-
-def _size_agreement(support: str | None, target: Entity) -> float:
-    """1 when the said support word ("desk", "nightstand") fits the target's category, 0.4
-    when it suggests the other size of table, 1 when it says nothing about size."""
-    want = SUPPORT_CATEGORIES.get(support or "")
-    if want is None or not target.category or target.category not in ("small table", "large table"):
-        return 1.0
-    return 1.0 if target.category == want else 0.4
 
 
 def _gap(a: Entity, b: Entity) -> float:

@@ -123,7 +123,10 @@ class FetchRunner:
         plan = parsed.plan
         source = make_furniture_source(perception, w, scene,
                                        detector=self.detector if perception == "sensed" else None)
-        task = FetchTask(w, source, self.policies, max_sim_seconds=self.max_sim_seconds, on_event=on_event)
+        from assistant.perception.objects import SimObjectDetector
+
+        task = FetchTask(w, source, self.policies, max_sim_seconds=self.max_sim_seconds, on_event=on_event,
+                         object_detector=SimObjectDetector.for_scene(w.scene(scene)))
         path: list = []
         with SimRobot(w, scene, seed=seed, odometry_noise=OdometryNoise() if self.noise else None) as robot:
             result = task.run(robot, plan)
@@ -155,6 +158,7 @@ class FetchRunner:
             "true_final_pose": [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
             "target_position": None if placed is None else [round(placed.x, 3), round(placed.y, 3)],
             "target_visible": visibility,
+            "seen": [s.to_dict() for s in result.seen],
             "sim_seconds": round(result.sim_seconds, 2),
             "wall_seconds": round(time.perf_counter() - start, 3),
         }

@@ -157,3 +157,50 @@ def test_thick_wall_door_gaps_are_open_floor(all_worlds):
     world = all_worlds["hk-studio"]
     path = plan_path(build_occupancy(world), world.start, (-0.5, -1.5))
     assert 2.0 < path.length_m < 5.0
+
+
+class _RecordingDetector:
+    """A stand-in object detector: the simulator's detector, counting the frames it is given."""
+
+    def __init__(self, scene):
+        from assistant.perception.objects import SimObjectDetector
+
+        self.inner = SimObjectDetector.for_scene(scene)
+        self.frames = 0
+
+    def detect(self, frame):
+        self.frames += 1
+        return self.inner.detect(frame)
+
+
+def test_objects_seen_are_reported_as_events_and_in_the_result(apartment, policies):
+    from assistant.executor.sightings import PlacedSighting
+    from assistant.geometry import Pose2D
+    from assistant.perception.objects import ObjectDetector
+    from assistant.sim import SimRobot
+
+    detector = _RecordingDetector(apartment.scene("original"))
+    assert isinstance(detector, ObjectDetector)
+    events = []
+    task = FetchTask(apartment, OracleFurniture(apartment, "original"), policies, object_detector=detector,
+                     on_event=lambda name, data: events.append((name, data)))
+    plan = _plan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case")
+    with SimRobot(apartment, "original", seed=0) as robot:
+        result = task.run(robot, plan)
+    assert result.success
+    seen_events = [data for name, data in events if name == "objects_seen"]
+    assert seen_events and detector.frames > len(seen_events)  # every frame goes through, few see objects
+    for data in seen_events:
+        assert set(data) == {"seen", "pose"} and isinstance(data["pose"], Pose2D)
+        assert data["seen"] and all(isinstance(s, PlacedSighting) for s in data["seen"])
+    glasses = next(s for s in result.seen if s.name == "glasses case")
+    assert glasses.room == "living room" and glasses.furniture_id == "coffeetable_1"
+    as_dict = result.to_dict()["seen"]
+    assert [d["name"] for d in as_dict] == sorted({s.name for d in seen_events for s in d["seen"]})
+    assert {"name", "x", "y", "room", "furniture_id", "furniture"} <= set(as_dict[0])
+
+
+def test_without_an_object_detector_nothing_is_seen(apartment, policies):
+    plan = _plan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case")
+    result, _ = _run(apartment, plan, policies)
+    assert result.seen == [] and result.to_dict()["seen"] == []

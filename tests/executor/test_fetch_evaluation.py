@@ -14,7 +14,12 @@ from assistant.executor import evaluation
 
 def test_dev_set_covers_every_object_home_scene_and_kind(all_worlds):
     records = evaluation.load_dev_set()
-    assert len(records) >= 60
+    commands = {(r["world"], r["text"]) for r in records}
+    assert len(commands) >= 60  # distinct commands (issue 7), each run in both scenes
+    for scene in ("original", "modified"):
+        assert {(r["world"], r["text"]) for r in records if r["scene"] == scene} == commands, scene
+    per_home = Counter(world for world, _ in commands)
+    assert max(per_home.values()) - min(per_home.values()) <= 2, per_home  # balanced over the homes
     homes = {"apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house"}
     assert {r["world"] for r in records} == homes
     for home in homes:
