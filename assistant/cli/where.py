@@ -1,9 +1,12 @@
-"""``assistant where OBJECT --world NAME``: say where an object is, like a person would.
+"""``assistant where OBJECT --world NAME``: search for an object, then say where it is.
 
-Today the search is the *oracle search* (the object's position is read from the world file) and
-the environment model is the world file's furniture (*oracle environment*); both are labelled
-in the output (``"search": "oracle"``, ``"environment": "oracle"``). The description itself is
-composed by content selection and surface realization learned from the corpus.
+By default (``--search sensed``) the simulated robot searches the home room by room from the
+world's start pose with its own perception (furniture from depth, small objects from the
+object detector) and the description is composed from the environment model it built
+(``"search": "sensed"``, ``"environment": "perceived"``). ``--search oracle`` keeps the old
+shortcut — the object's position and the furniture read from the world file — and is labelled
+``"search": "oracle"``, ``"environment": "oracle"``. The description itself is composed by
+content selection and surface realization learned from the corpus.
 """
 
 from __future__ import annotations
@@ -30,11 +33,19 @@ def register(subparsers) -> None:
                              "(default: from --question, else static)")
     parser.add_argument("--question", help="the person's question; 'how do I get to my X' picks "
                                            "the dynamic style")
+    parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
+                        help="sensed (default): the simulated robot searches with its own "
+                             "perception; oracle: read the object and furniture from the world file")
+    parser.add_argument("--miss-rate", type=float, default=0.0, metavar="P",
+                        help="sensed search: probability that the object detector misses a visible "
+                             "object in a frame (default 0)")
+    parser.add_argument("--seed", type=int, default=0, help="sensed search: simulator seed")
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="annotated corpus (XML + chunk-grounding CSV, files or folders) to "
                              "learn from instead of the repository's corpus/")
     parser.add_argument("--batch", metavar="FILE",
-                        help="one JSON request per line: {object, world, scene, listener, style}")
+                        help="one JSON request per line: {object, world, scene, listener, style, "
+                             "question, search}")
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
@@ -44,6 +55,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.generation import Describer, load_generation_model
 
     describer = Describer(load_generation_model(args.corpus))
+    shared: dict = {}
     if args.batch:
         def handle(request: dict) -> dict:
             listener = request.get("listener")
@@ -51,37 +63,50 @@ def run(args: argparse.Namespace) -> int:
                 listener = parse_pose(listener)
             return answer(describer, request.get("object"), request.get("world"),
                           request.get("scene", "original"), listener, request.get("style"),
-                          request.get("question")).to_dict() | _labels()
+                          request.get("question"), search=request.get("search", args.search),
+                          miss_rate=float(request.get("miss_rate", args.miss_rate)),
+                          seed=int(request.get("seed", args.seed)), shared=shared).to_dict()
         return run_batch(args.batch, handle, json_requests=True)
     if not args.object or not args.world:
         raise AssistantError("give an object and --world NAME (or --batch FILE)")
+    if args.search == "sensed" and not args.json:
+        import sys
+
+        print(f"searching for the {args.object} …", file=sys.stderr, flush=True)
     result = answer(describer, args.object, args.world, args.scene, args.listener, args.style,
-                    args.question)
+                    args.question, search=args.search, miss_rate=args.miss_rate, seed=args.seed,
+                    shared=shared)
     if args.json:
-        emit_json(result.to_dict() | _labels())
+        emit_json(result.to_dict())
         return 0
     print(result.description)
-    if result.found:
+    report = result.search_report or {}
+    if result.search == "sensed":
+        print(f"  search: sensed — rooms searched: {', '.join(result.searched_rooms) or 'none'}; "
+              f"{report.get('path_m', 0):.1f} m driven, {report.get('sim_seconds', 0):.0f} s robot time, "
+              f"{result.search_seconds:.1f} s computer time to the sighting")
+    else:
+        print("  search: oracle (world file), environment: oracle (world file furniture)")
+    if result.found and result.tree is not None:
         said_room = any(n.kind == "room" for n in result.selected)
         print(f"  nodes: {', '.join(result.nodes)}"
               + (f"; room: {result.to_dict()['room']}" if said_room else ""))
         print(f"  tree: {result.tree.bracketed()}")
-        print(f"  search: oracle (world file), environment: oracle (world file furniture); "
-              f"composed in {result.composition_seconds * 1000:.1f} ms")
+        print(f"  composed in {result.composition_seconds * 1000:.1f} ms")
         if result.ambiguous:
             print("  note: no selection singles the furniture out; the description may be ambiguous")
     return 0
 
 
-def _labels() -> dict:
-    return {"search": "oracle", "environment": "oracle"}
-
-
-def answer(describer, name, world_name, scene="original", listener=None, style=None, question=None):
-    """One "where is my X?" request with the oracle search (see the module docstring)."""
+def answer(describer, name, world_name, scene="original", listener=None, style=None, question=None,
+           search: str = "sensed", miss_rate: float = 0.0, seed: int = 0, shared: dict | None = None,
+           on_event=None):
+    """One "where is my X?" request: search (``sensed``: the simulated robot from the world's
+    start pose; ``oracle``: the world file), then compose. ``shared`` keeps the loaded furniture
+    detector between requests of a batch."""
     import time
 
-    from assistant.errors import AssistantError
+    from assistant.errors import AssistantError, UnknownNameError
     from assistant.generation import (not_found_description, oracle_environment, oracle_sighting,
                                       style_for_question)
     from assistant.geometry import Pose2D
@@ -89,7 +114,27 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
 
     if not name or not world_name:
         raise AssistantError("a request needs 'object' and 'world'")
+    if search not in ("sensed", "oracle"):
+        raise UnknownNameError("search", str(search), ("sensed", "oracle"))
     world = load_world(world_name)
+    scene = world.scene(scene).name
+    pose = Pose2D(*listener) if listener is not None else None
+    if style is None:
+        style = style_for_question(question) if question else "static"
+    if style == "dynamic" and pose is None:
+        pose = world.start
+    if search == "sensed":
+        from assistant.generation import search_for
+
+        shared = {} if shared is None else shared
+        if "furniture_detector" not in shared:
+            from assistant.perception import FurnitureDetector
+
+            shared["furniture_detector"] = FurnitureDetector()
+        found = search_for(" ".join(str(name).lower().split()), world, scene,
+                           furniture_detector=shared["furniture_detector"], miss_rate=miss_rate,
+                           seed=seed, on_event=on_event)
+        return describer.describe_search(found, world.floorplan, listener_pose=pose, style=style)
     start = time.perf_counter()
     sighting = oracle_sighting(world, scene, str(name))
     search_s = time.perf_counter() - start
@@ -97,11 +142,6 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
         result = not_found_description(str(name), world.floorplan.room_names)
         result.search_seconds = search_s
         return result
-    pose = Pose2D(*listener) if listener is not None else None
-    if style is None:
-        style = style_for_question(question) if question else "static"
-    if style == "dynamic" and pose is None:
-        pose = world.start
     env = oracle_environment(world, scene)
     result = describer.describe(sighting, env, world.floorplan, listener_pose=pose, style=style)
     result.search_seconds = search_s

@@ -5,8 +5,12 @@
 * :class:`GenerationModel`, :func:`load_generation_model` — co-occurrence weights, chunk texts
   ``P(text, type | RDT)`` and the six chunk relations learned from the annotated corpus.
 * :func:`select_content` (equation 2, exact over subsets), :func:`realize` (Algorithm 1).
+* :class:`ObjectSearch`, :func:`search_for`, :class:`SearchResult` — the robot's search, room
+  by room, with its own furniture perception and object detector; then
+  :meth:`Describer.describe_search` composes the answer from the environment model it built.
 * :class:`ObjectSighting` — what a search reports; :func:`oracle_sighting` and
-  :func:`oracle_environment` read it from the world file until the robot's search exists.
+  :func:`oracle_environment` read it from the world file (the labelled ``oracle`` search, and
+  the evaluation's ground truth).
 """
 
 from __future__ import annotations
@@ -28,6 +32,8 @@ __all__ = [
     "candidate_nodes", "known_objects", "load_generation_model", "not_found_description",
     "objective_values", "OracleCase", "oracle_cases", "oracle_environment", "oracle_sighting", "realize", "repeated_phrases",
     "route_nodes", "select_content", "style_for_question",
+    "ObjectSearch", "SearchResult", "room_order", "room_only_description", "search_for",
+    "to_generation_sighting",
 ]
 
 _LAZY = {
@@ -50,6 +56,12 @@ _LAZY = {
     "realize": "assistant.generation.realize",
     "repeated_phrases": "assistant.generation.realize",
     "route_nodes": "assistant.generation.route",
+    "ObjectSearch": "assistant.generation.search",
+    "SearchResult": "assistant.generation.search",
+    "room_order": "assistant.generation.search",
+    "search_for": "assistant.generation.search",
+    "to_generation_sighting": "assistant.generation.search",
+    "room_only_description": "assistant.generation.describer",
 }
 
 

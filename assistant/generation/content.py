@@ -33,7 +33,7 @@ import numpy as np
 
 from assistant.generation.types import ContentNode
 
-__all__ = ["ALPHA", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
+__all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
            "select_content", "support_of", "wall_band"]
 
 ALPHA = 0.1
@@ -54,6 +54,15 @@ LOOSE_WALL_GAP_M = 0.75
 #: "at the back (of the room)": the support's centre beyond this share of the room's depth
 BACK_DEPTH = 2 / 3
 OUTER = ("front", "left", "back", "right")
+#: a look-alike is not ruled out by a furniture relation when it fits at least this share of
+#: the support's fit (the listener takes the best-fitting one; close seconds stay confusable)
+LISTENER_SHARE = 0.75
+#: support words that tell a table's size, understood by the grounder (``end table`` →
+#: nightstand → a small table); offered only when a table of the other size is in the room
+SIZE_WORDS = {"small table": "end table"}
+SIZE_PROBABILITY = 0.6
+#: weight of the uniqueness term: the share of look-alikes the selection rules out
+UNIQUENESS = 0.5
 WALL_SIDES = {"left": math.pi / 2, "right": -math.pi / 2, "back": 0.0}
 
 
@@ -228,7 +237,7 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
         return 0.0 if x is ref else _near(dist_srv(ref, x))
 
     for ref_word, refs in sorted(by_word.items()):
-        best: dict[str, tuple[float, str]] = {}
+        best: dict[str, tuple[float, str]] = {}  # direction → (P, reference id)
         for ref in refs:
             got = directional(ref, support)
             if got is not None and got[1] > best.get(got[0], (0.0, ""))[0]:
@@ -237,23 +246,36 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
             if p >= MIN_NEAR and p > best.get("beside", (0.0, ""))[0]:
                 best["beside"] = (p, ref.id)
         for direction, (p, ref_id) in sorted(best.items()):
-            # the references are in the support's room: furniture elsewhere is not near them
+            # the references are in the support's room: furniture elsewhere is not near them.
+            # A look-alike stays a candidate for the listener only when the relation holds for
+            # it loosely AND fits it nearly as well as the support (a listener, like the fetch
+            # task, takes the table that fits "in front of the couch" best); direction words only
+            bar = LISTENER_SHARE * p
             if direction == "beside":
+                # "by the bed" says nothing of the side: any look-alike near one is confusable
                 test = (lambda x, refs=refs: x.room == room_name and
                         any(beside(r, x) >= MIN_NEAR for r in refs))
             else:
-                def test(x, refs=refs, dwd=direction):
+                def test(x, refs=refs, dwd=direction, bar=bar):
                     if x.room != room_name:
                         return False
                     for r in refs:
                         got = directional(r, x, False)
-                        if got is not None and got[0] == dwd:
+                        if got is not None and got[0] == dwd and got[1] >= bar:
                             return True
                     return False
             out.append(Candidate(
                 ContentNode("relation", f"furniture-{direction}", f"{ref_word}-{direction}-{word}", p,
                             {"ref": ref_word, "direction": direction}, ref_id),
                 test, "ref:" + ref_word))
+
+    size_word = SIZE_WORDS.get(getattr(support, "category", None) or "")
+    if size_word is not None and any(
+            x is not support and x.name == word and x.room == room_name
+            and getattr(x, "category", None) and x.category != support.category for x in furniture):
+        # "the end table": the support's size tells it from tables of the other size
+        out.append(Candidate(ContentNode("size", "size", None, SIZE_PROBABILITY, {"support": size_word}),
+                             lambda x, c=support.category: getattr(x, "category", None) == c, "size"))
 
     heading = entry_heading(floorplan, room_name, listener_pose)
     if heading is not None:
@@ -364,6 +386,9 @@ def select_content(candidates: list[Candidate], model, distractors: list, alpha:
     if relation_rows:
         ok &= masks[:, relation_rows].sum(axis=1) <= MAX_RELATIONS
     values = objective_values(masks, p, v, alpha)
+    if distractors:
+        # the uniqueness term: the share of look-alikes the selection rules out
+        values = values + UNIQUENESS * ((masks.astype(float) @ rules_out) >= 1).mean(axis=1)
     feasible = ok & unique
     ambiguous = not feasible.any()
     if ambiguous and distractors:

@@ -17,7 +17,7 @@ from typing import NamedTuple
 from assistant.errors import AssistantError, UnknownNameError
 from assistant.generation.types import STYLES, GeneratedDescription, ObjectSighting
 
-__all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "known_objects", "not_found_description", "OracleCase", "oracle_cases",
+__all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "room_only_description", "known_objects", "not_found_description", "OracleCase", "oracle_cases",
            "oracle_environment", "oracle_sighting", "style_for_question"]
 
 #: questions that ask for the way, not the place ("how do I get to my mug?")
@@ -78,6 +78,7 @@ class Describer:
         start = time.perf_counter()
         furniture = [e for e in environment_entities if getattr(e, "kind", None) is None or
                      str(getattr(e.kind, "value", e.kind)) == "short_term"]
+        furniture = [e for e in furniture if plausible_size(e)]
         support = support_of(sighting, furniture)
         if support is None:
             raise AssistantError(f"no furniture under the {sighting.name} at ({sighting.x:.2f}, "
@@ -88,20 +89,81 @@ class Describer:
         says_room = any(n.key == "enter" for n in route)
         candidates = candidate_nodes(sighting, support, furniture, floorplan, listener_pose,
                                      include_room=not says_room)
-        candidates = [c for c in candidates if c.forced or chunk_options(self.model, c.node, style)]
+        candidates = [c for c in candidates if c.forced or c.node.kind == "size"
+                      or chunk_options(self.model, c.node, style)]
         listener_inside = (listener_pose is not None and
                            floorplan.room(room).contains(listener_pose.x, listener_pose.y))
         distractors = [e for e in furniture if e is not support and e.name == support.name
                        and (not (listener_inside or says_room) or e.room == room)]
         selected, value, ambiguous = select_content(candidates, self.model, distractors, self.alpha)
+        size = [n for n in selected if n.kind == "size"]
+        selected = [n for n in selected if n.kind != "size"]
+        for n in selected:
+            if n.kind == "support" and size:
+                n.words = {**n.words, "support": size[0].words["support"]}
         nodes = route + selected
         text, top, said = realize(self.model, nodes, sighting.name, style)
+        said = said + size
         tree = top[0] if len(top) == 1 else _wrap(top)
         elapsed = time.perf_counter() - start
         return GeneratedDescription(
             found=True, description=text, object=sighting.name, style=style, sighting=sighting,
             selected=said, candidates=[c.node for c in candidates], tree=tree, objective=value,
             ambiguous=ambiguous, composition_seconds=elapsed)
+
+
+    def describe_search(self, result, floorplan, listener_pose=None, style: str = "static"
+                        ) -> GeneratedDescription:
+        """The answer after a sensed search (:class:`~assistant.generation.search.SearchResult`):
+        composed from the environment model the search built (its perceived furniture), or the
+        honest "I looked in … and did not find …" when it was not seen. ``search_seconds`` is
+        the search's wall-clock time up to the sighting; the search report (rooms searched,
+        path, simulated time…) is attached as ``search_report``."""
+        report = result.to_dict()
+        report.pop("furniture", None)
+        report["furniture_perceived"] = len(result.furniture)
+        search_s = result.found_at_wall_s if result.found_at_wall_s is not None else result.wall_seconds
+        if not result.found:
+            out = not_found_description(result.object, list(result.rooms_searched))
+        else:
+            try:
+                out = self.describe(result.sighting, result.furniture, floorplan,
+                                    listener_pose=listener_pose, style=style)
+            except AssistantError as error:
+                if "no furniture under" not in str(error):
+                    raise
+                out = room_only_description(result.sighting, style)
+        out.search = "sensed"
+        out.environment = "perceived"
+        out.search_seconds = search_s
+        out.searched_rooms = list(result.rooms_searched)
+        out.search_report = report
+        return out
+
+
+#: the longest footprint side (metres) a perceived item of a category can have: a "chair"
+#: 2 m long is a couch seen end-on, and a reference the perception has wrong makes a false
+#: sentence — such items are left out of the description (not out of the model)
+MAX_EXTENT_M = {"chair": 1.4}
+
+
+def plausible_size(entity) -> bool:
+    """Whether an entity's footprint fits its category word (see :data:`MAX_EXTENT_M`)."""
+    limit = MAX_EXTENT_M.get(getattr(entity, "name", None))
+    if limit is None or not len(getattr(entity, "cells", ())):
+        return True
+    pts = entity.points_m()
+    extent = float((pts.max(axis=0) - pts.min(axis=0)).max()) + entity.grid.resolution_m
+    return extent <= limit
+
+
+def room_only_description(sighting: ObjectSighting, style: str = "static") -> GeneratedDescription:
+    """When perception found no furniture under the object: say only its room (true, short)."""
+    verb = "are" if sighting.name.endswith("s") and not sighting.name.endswith("ss") else "is"
+    where = f" in the {sighting.room}" if sighting.room else " here"
+    text = f"The {sighting.name} {verb}{where}."
+    return GeneratedDescription(found=True, description=text, object=sighting.name, style=style,
+                                sighting=sighting)
 
 
 def _wrap(top):

@@ -104,7 +104,7 @@ def _fill(template, node: ContentNode | None, object_name: str) -> list[str]:
         if w == SLOT_OBJECT:
             out.extend(object_name.split())
         elif w == SLOT_SUPPORT:
-            out.append(words.get("support", "table"))
+            out.extend(words.get("support", "table").split())
         elif w == SLOT_REF:
             out.append(words.get("ref", "table"))
         elif w == SLOT_ROOM:
@@ -192,6 +192,12 @@ def _order_siblings(model, top: list[ChunkNode], style: str, moved: set | None =
     """Order each sibling list by the learned neighbour relations; only lists that received a
     chunk of this call (``moved``) are reordered."""
     def compare(a: ChunkNode, b: ChunkNode) -> int:
+        fa, fb = _furniture_relation(a), _furniture_relation(b)
+        if fa != fb and _relation(a) and _relation(b):
+            # a furniture landmark before a wall or the room's middle: "on the table in front
+            # of the couch in the middle of the room" — the listener (a person, or the fetch
+            # task, which resolves a node's relations in the order said) finds the couch first
+            return -1 if fa else 1
         nl = model.relation_probability(a.label, b.label, "NL", style)
         nr = model.relation_probability(a.label, b.label, "NR", style)
         if nl == nr:
@@ -206,6 +212,14 @@ def _order_siblings(model, top: list[ChunkNode], style: str, moved: set | None =
             visit(c.right)
 
     visit(top)
+
+
+def _relation(c: ChunkNode) -> bool:
+    return c.node is not None and c.node.kind == "relation"
+
+
+def _furniture_relation(c: ChunkNode) -> bool:
+    return _relation(c) and c.node.key.startswith("furniture-")
 
 
 def sentence_from_tree(top: list[ChunkNode], style: str) -> str:

@@ -123,6 +123,9 @@ class GeneratedDescription:
     search_seconds: float = 0.0
     composition_seconds: float = 0.0
     searched_rooms: list[str] = field(default_factory=list)
+    #: the search's own report (:meth:`SearchResult.to_dict` without the furniture list) when
+    #: the answer comes from a sensed search; None for the oracle search
+    search_report: dict | None = None
 
     @property
     def nodes(self) -> list[str]:
@@ -158,4 +161,5 @@ class GeneratedDescription:
             "searched_rooms": list(self.searched_rooms),
             "search_seconds": self.search_seconds,
             "composition_seconds": self.composition_seconds,
+            "search_report": self.search_report,
         }

@@ -20,7 +20,7 @@ def _run(argv, capsys):
 
 
 def test_json_answer_has_the_contract_fields(capsys, generation_model):
-    code, out = _run(["mug", "--world", "apartment", "--json"], capsys)
+    code, out = _run(["mug", "--world", "apartment", "--search", "oracle", "--json"], capsys)
     data = json.loads(out)
     assert code == 0
     for field in ("found", "description", "nodes", "seen_at", "selected", "tree",
@@ -35,7 +35,7 @@ def test_batch_goes_on_after_a_bad_line(tmp_path, capsys, generation_model):
     batch.write_text('{"object": "fork", "world": "hk-studio", "scene": "modified"}\n'
                      '{"object": "stapler", "world": "apartment"}\n'
                      '{"object": "mug", "world": "apartment", "question": "how do I get to my mug"}\n')
-    code, out = _run(["--batch", str(batch)], capsys)
+    code, out = _run(["--batch", str(batch), "--search", "oracle"], capsys)
     lines = [json.loads(x) for x in out.splitlines()]
     assert code == 0 and len(lines) == 3
     assert lines[0]["found"] and "fork" in lines[0]["description"]
@@ -46,3 +46,22 @@ def test_batch_goes_on_after_a_bad_line(tmp_path, capsys, generation_model):
 def test_missing_arguments_are_explained(capsys):
     with pytest.raises(AssistantError):
         _run(["mug"], capsys)
+
+
+def test_sensed_search_is_the_default_and_is_labelled(capsys, generation_model):
+    # the hk-studio laptop is in view of the start pose: a short search
+    code, out = _run(["laptop", "--world", "hk-studio", "--json"], capsys)
+    data = json.loads(out)
+    assert code == 0 and data["found"]
+    assert data["search"] == "sensed" and data["environment"] == "perceived"
+    assert data["seen_at"]["room"] == "meeting room"
+    assert abs(data["seen_at"]["x"] - -4.0) < 0.3 and abs(data["seen_at"]["y"] - -2.9) < 0.3
+    report = data["search_report"]
+    assert report["found"] and report["rooms_searched"] and report["furniture_perceived"] >= 1
+    assert data["search_seconds"] > 0 and data["composition_seconds"] > 0
+    assert data["description"].startswith("The laptop is")
+
+
+def test_unknown_search_mode_is_an_error(capsys):
+    with pytest.raises(SystemExit):
+        _run(["mug", "--world", "apartment", "--search", "psychic"], capsys)

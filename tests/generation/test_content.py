@@ -78,3 +78,46 @@ def test_the_selection_singles_the_support_out():
     cands = [_cand("support", 1.0, "s", forced=True), _cand("b", 0.95, "gb")]
     _, _, ambiguous = select_content(cands, FlatModel(0.0), ["other table"])
     assert ambiguous
+
+
+def test_a_size_word_tells_a_small_table_from_desks(describer):
+    from assistant.generation import oracle_environment, oracle_sighting
+    from assistant.world import load_world
+
+    world = load_world("hk-studio")
+    env = oracle_environment(world, "modified")
+    answer = describer.describe(oracle_sighting(world, "modified", "monitor"), env, world.floorplan)
+    assert "on the end table" in answer.description
+    assert any(n.kind == "size" for n in answer.selected)
+    # no table of the other size in the room: no size word
+    world = load_world("apartment")
+    answer = describer.describe(oracle_sighting(world, "original", "mug"),
+                                oracle_environment(world, "original"), world.floorplan)
+    assert "end table" not in answer.description
+
+
+def test_the_uniqueness_term_prefers_selections_that_rule_out_look_alikes(generation_model):
+    import numpy as np
+
+    from assistant.generation.content import Candidate, select_content
+    from assistant.generation.types import ContentNode
+
+    class Thing:
+        def __init__(self, name):
+            self.name = name
+
+    a, b = Thing("table"), Thing("table")
+    cands = [
+        Candidate(ContentNode("support", "support", "room-center-table", 1.0, {"support": "table"}),
+                  lambda x: True, "support", forced=True),
+        # very probable, but true of both look-alikes
+        Candidate(ContentNode("relation", "furniture-beside", "bed-beside-table", 0.9,
+                              {"ref": "bed", "direction": "beside"}), lambda x: True, "ref:bed"),
+        # less probable, rules out one of them
+        Candidate(ContentNode("relation", "wall-left", "wall-left-table", 0.5, {"direction": "left"}),
+                  lambda x: x is b, "wall"),
+    ]
+    chosen, _, ambiguous = select_content(cands, generation_model, [a, b])
+    assert ambiguous  # nothing rules out b
+    assert any(n.key == "wall-left" for n in chosen)
+    assert np.isfinite(_)
