@@ -2,8 +2,11 @@
 fetches, to its first motion), with the models already loaded.
 
 Each utterance goes through :meth:`DialogueManager.handle` exactly as ``assistant chat`` sends
-it; a fetch replies "Going to the bedroom." at once and runs in a worker thread, which is
-stopped right away here (its simulator run is not part of the gap). Target: median first
+it; a fetch replies "Going to the bedroom." at once and runs in a worker thread (so does the robot's
+search for an object it has never seen: "I haven't seen your glasses case yet — I'll go and look
+for it."), which is stopped right away here (its simulator run is not part of the gap).
+``where_memory`` answers from a remembered sighting, ``where_oracle`` from the world file
+(``--search oracle``). Target: median first
 reply ≤ 200 ms. The first-motion time (command → the fetch task's first velocity command to
 the simulated robot) and the stop time ("stop" said while driving → the fetch has ended) are
 measured on a few fetch starts.
@@ -25,9 +28,13 @@ UTTERANCES = [
     ("fetch", "go into the bedroom"),
     ("clarify", "get the statue from the table in the bedroom"),
     ("clarify", "bring me my fork"),
-    ("where", "where is my glasses case?"),
-    ("where", "have you seen my monitor"),
-    ("where_dynamic", "how do I get to my fork?"),
+    ("unknown_word", "bring me the mug from the dresser in the bedroom"),
+    ("search", "where is my glasses case?"),
+    ("search", "have you seen my monitor"),
+    ("where_memory", "where is my mug"),
+    ("where_memory", "how do I get to my mug?"),
+    ("where_oracle", "where is my glasses case?"),
+    ("where_oracle", "how do I get to my fork?"),
     ("control", "which home am I in?"),
     ("control", "help"),
     ("control", "repeat that"),
@@ -55,9 +62,17 @@ def main() -> int:
     folder = tempfile.mkdtemp()
 
     times: dict[str, list[float]] = {}
+    mug = next(f for f in world.scene("original").furniture if f.id == "hexagontable_1")
     for _ in range(args.repeats):
         for kind, text in UTTERANCES:
-            manager = DialogueManager(world, services=services, memory=ObjectMemory(f"{folder}/m.json"))
+            memory = ObjectMemory(f"{folder}/m.json")
+            for s in memory.sightings():
+                memory.forget(s.world, s.object)
+            if kind == "where_memory":  # seen 3 minutes ago (what a fetch or a search leaves)
+                memory.remember(world.name, "mug", "bedroom", mug.id, "table", "on the table by the chair",
+                                time_s=time.time() - 180, x_m=mug.x, y_m=mug.y)
+            services.search_mode = "oracle" if kind == "where_oracle" else "sensed"
+            manager = DialogueManager(world, services=services, memory=memory)
             start = time.perf_counter()
             turn = manager.handle(text)
             gap = time.perf_counter() - start

@@ -26,6 +26,10 @@ def register(subparsers) -> None:
     parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
                         help="sensed: furniture detector on depth frames (default); oracle: the world "
                              "file's furniture")
+    parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
+                        help="'where is my X' for an object the robot has not seen: sensed (default) "
+                             "— the robot searches the home; oracle — answer from the simulator's "
+                             "world file (labelled as such)")
     parser.add_argument("--view", action="store_true", help="show the robot acting in the 3D view (meshcat)")
     parser.add_argument("--memory", metavar="FILE",
                         help="object memory file (default: DATA/memory.json; DATA is $ASSISTANT_DATA or "

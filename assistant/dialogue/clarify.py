@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from assistant.dialogue.intents import ordinal_choice
 
@@ -16,7 +17,8 @@ def choose_option(norm: str, options: list[dict], parse) -> int | None:
     grounded plan (called only when no ordinal was said). Tried in order: an ordinal ("the
     second", "the last one"); the reference of a grounded node ("the one with the chairs" →
     ``chair-beside-table`` → the single option naming a chair; when several do, the direction);
-    the single option sharing most content words with the answer."""
+    the single option sharing most content words with the answer (its phrase and its model's
+    name: "the hexagon one")."""
     i = ordinal_choice(norm)
     if i is not None and -len(options) <= i < len(options):
         return i % len(options)
@@ -39,7 +41,8 @@ def choose_option(norm: str, options: list[dict], parse) -> int | None:
                 if len(sub) == 1:
                     return sub[0]
     content = {w for w in norm.split() if w not in _STOP and len(w) > 2}
-    scores = [len(content & set(re.findall(r"[a-z]+", ph))) for ph in phrases]
+    named = [ph + " " + str(o.get("model") or "").lower() for ph, o in zip(phrases, options)]
+    scores = [len(content & set(re.findall(r"[a-z]+", ph))) for ph in named]
     best = max(scores) if scores else 0
     if best > 0 and scores.count(best) == 1:
         return scores.index(best)
@@ -71,6 +74,10 @@ def progress_sentence(name: str, data: dict, words: dict) -> str | None:
         return "I'm not sure where that is — looking around."
     if name == "better_view":
         return "Moving to the middle of the room for a better look."
+    if name == "search_room":
+        return f"Looking in the {data.get('room')}."
+    if name == "room_skipped":
+        return f"I can't get into the {data.get('room')} — skipping it."
     return None
 
 
@@ -79,4 +86,114 @@ def article(word: str) -> str:
 
 
 _STOP = {"the", "one", "with", "that", "this", "near", "next", "and", "its", "it", "is", "on", "of", "to",
-         "by", "in", "at", "a", "an", "table", "tables", "chair", "couch", "bed", "please", "which"}
+         "by", "in", "at", "a", "an", "table", "tables", "please", "which"}
+
+
+# ---------------------------------------------------------------------- furniture words
+@dataclass(frozen=True)
+class Mention:
+    """A furniture word in a command: ``said`` as typed ("dresser", "coffee table"),
+    ``category`` the word the grounding reads it as ("table"; None when it knows no such
+    furniture), ``here`` whether anything in this home is called that, ``models`` the catalogue
+    models of this home the words name ("coffee table"; empty for a bare category word)."""
+
+    said: str
+    category: str | None
+    here: bool
+    models: tuple[str, ...] = ()
+
+
+def furniture_mentions(tokens, pos, world, scene: str) -> list[Mention]:
+    """The furniture words of a command (tokens as the language layer split and tagged them).
+
+    A word counts when the tagger calls it furniture (``FUR``) or the grounding vocabulary knows
+    it as furniture. Two-word names are read together: a model of this home ("hexagon table",
+    "blue chair") or a phrase of the vocabulary ("coffee table", "night stand").
+    """
+    from assistant.grounding.vocabulary import FURNITURE_WORDS, PHRASES, SYNONYMS
+
+    items = world.scene(scene).furniture
+    models = {f.model.lower() for f in items}
+    words_here = {f.word for f in items} | {m.split()[-1] for m in models} | {m for m in models if " " not in m}
+    words = [str(t).lower() for t in tokens]
+    tags = [str(p) for p in pos]
+    out: list[Mention] = []
+    i = 0
+    while i < len(words):
+        w = words[i]
+        two = f"{w} {words[i + 1]}" if i + 1 < len(words) else None
+        if two is not None and (two in models or (w, words[i + 1]) in PHRASES):
+            canonical = PHRASES.get((w, words[i + 1]), words[i + 1])
+            category = FURNITURE_WORDS.get(canonical)
+            here = two in models or canonical in words_here
+            out.append(Mention(two, category, here, (two,) if two in models else ()))
+            i += 2
+            continue
+        canonical = SYNONYMS.get(w, w)
+        singular = canonical[:-1] if canonical.endswith("s") and canonical[:-1] in FURNITURE_WORDS else canonical
+        if (tags[i] if i < len(tags) else "NN") == "FUR" or singular in FURNITURE_WORDS:
+            category = FURNITURE_WORDS.get(singular)
+            here = singular in words_here or singular in FURNITURE_CHOICES and category is not None \
+                and any(f.word == category for f in items) or w in words_here
+            named = tuple(m for m in models if m == singular)
+            out.append(Mention(w, category, bool(here), named))
+        i += 1
+    return out
+
+
+def unused_mentions(mentions: list[Mention], plan) -> list[Mention]:
+    """Known furniture words the plan does not use (no node has their category as target or
+    reference): the plan dropped part of what was said."""
+    used = set()
+    for n in plan.nodes:
+        used.add(n.target)
+        used.update(r for r, _ in n.pairs)
+    return [m for m in mentions if m.here and m.category is not None and m.category not in used]
+
+
+def model_choice(mentions: list[Mention], items) -> object | None:
+    """The single furniture item whose model a mention names ("the hexagon table"), or None."""
+    for m in mentions:
+        if not m.models:
+            continue
+        hits = [f for f in items if f.model.lower() in m.models]
+        if len(hits) == 1:
+            return hits[0]
+    return None
+
+
+def distinct_phrases(world, scene: str, items) -> list[str]:
+    """"the one by the table", "the one nearer the bedroom door" … — phrases that tell furniture
+    of one kind apart when the describer's phrases do not (chairs, couches: nothing is put on
+    them, so their description says little). Tried in order: the nearest other furniture's
+    word, if it differs between the items; for two items, which is nearer the room's nearest
+    door; else "the first one" … counted from the west (smallest x)."""
+    others = [f for f in world.scene(scene).furniture if f not in items]
+
+    def nearest(item):
+        near = [f for f in others if f.room == item.room and f.word != item.word] or others
+        return min(near, key=lambda f: (f.x - item.x) ** 2 + (f.y - item.y) ** 2) if near else None
+
+    refs = [nearest(i) for i in items]
+    words = [r.word if r is not None else None for r in refs]
+    if None not in words and len(set(words)) == len(words):
+        return [f"the one by the {w}" for w in words]
+    doors = [d for d in world.floorplan.doors if items[0].room in getattr(d, "connects", ())]
+    if len(items) == 2 and doors:
+        cx = sum(i.x for i in items) / 2.0
+        cy = sum(i.y for i in items) / 2.0
+        door = min(doors, key=lambda d: (d.centre[0] - cx) ** 2 + (d.centre[1] - cy) ** 2)
+        d = [(i.x - door.centre[0]) ** 2 + (i.y - door.centre[1]) ** 2 for i in items]
+        if abs(d[0] - d[1]) > 0.25:
+            near = 0 if d[0] < d[1] else 1
+            name = door.name if "door" in door.name else f"{door.name} door"
+            out = ["", ""]
+            out[near] = f"the one nearer the {name}"
+            out[1 - near] = f"the one further from the {name}"
+            return out
+    order = sorted(range(len(items)), key=lambda k: items[k].x)
+    ordinal = ["first", "second", "third", "fourth", "fifth", "sixth"]
+    out = [""] * len(items)
+    for rank, k in enumerate(order):
+        out[k] = f"the {ordinal[min(rank, 5)]} one from the west"
+    return out

@@ -6,7 +6,8 @@ Conversations live in ``corpus/dialogues/*.yaml`` (or ``--corpus PATH``, files o
       - name: where-from-memory
         world: apartment            # default apartment
         scene: original             # default original
-        memory:                     # sightings the robot starts with (optional)
+        search: oracle              # optional: how an unseen object is found (default --search)
+        memory:                     # sightings the robot starts with (optional; at the furniture's centre)
           - {object: mug, furniture: hexagontable_1, minutes_ago: 3}
         turns:
           - say: where is my mug
@@ -32,7 +33,7 @@ from pathlib import Path
 
 EXPECT_KEYS = {"intent", "action", "outcome", "reply_has", "reply_lacks", "data", "memory"}
 TURN_KEYS = {"say", "wait", "expect", "sleep"}
-CONVERSATION_KEYS = {"name", "world", "scene", "memory", "turns", "covers"}
+CONVERSATION_KEYS = {"name", "world", "scene", "memory", "turns", "covers", "search"}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -40,6 +41,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="conversation files or folders (default: the repository's corpus/dialogues)")
     parser.add_argument("--perception", choices=("oracle", "sensed"), default="oracle",
                         help="furniture perception for fetches (default: oracle)")
+    parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
+                        help="'where is my X' for an object not in memory: the robot searches (sensed, "
+                             "default) or the world file answers (oracle); a conversation's own "
+                             "'search:' key wins")
     parser.add_argument("--timeout", type=float, default=180.0, help="seconds a fetch may take before it counts as a hang")
     parser.add_argument("--only", metavar="NAME", help="run only conversations whose name contains NAME")
     parser.add_argument("--verbose", action="store_true", help="print every turn")
@@ -143,8 +148,11 @@ def run_conversation(conv: dict, services, timeout: float = 180.0, verbose: bool
             item = items[m["furniture"]]
             memory.remember(world.name, m["object"], item.room, item.id, item.word,
                             furniture_phrase(services.describer, world, scene, item),
-                            time_s=now - 60.0 * float(m.get("minutes_ago", 1)))
+                            time_s=now - 60.0 * float(m.get("minutes_ago", 1)), source="seeded",
+                            x_m=item.x, y_m=item.y)
         manager = DialogueManager(world, scene, services, memory)
+        mode = services.search_mode
+        services.search_mode = conv.get("search", mode)
         problems, turns, hang, crash = [], [], False, False
         latencies = []
         for j, step in enumerate(conv["turns"]):
@@ -169,6 +177,7 @@ def run_conversation(conv: dict, services, timeout: float = 180.0, verbose: bool
                 print(f"  [{conv['name']}] {step.get('say', '(wait)')!r} -> "
                       f"{None if turn is None else (turn.intent, turn.action, turn.outcome, turn.reply)}")
         manager.close(timeout=30.0)
+        services.search_mode = mode
     return {"name": conv["name"], "file": conv["file"], "ok": not problems, "problems": problems,
             "crashed": crash, "hung": hang, "turns": turns, "covers": conv.get("covers", []),
             "reply_seconds": latencies}
@@ -184,7 +193,7 @@ def run(args: argparse.Namespace) -> int:
     conversations = load_conversations(args.corpus)
     if args.only:
         conversations = [c for c in conversations if args.only in c["name"]]
-    services = Services(perception=args.perception)
+    services = Services(perception=args.perception, search=args.search)
     start = time.perf_counter()
     services.warm_up(load_world(conversations[0].get("world", "apartment")) if conversations else None,
                      background=False)

@@ -24,7 +24,9 @@ import threading
 import time
 from dataclasses import dataclass, field
 
-from assistant.dialogue.clarify import FURNITURE_CHOICES, article, choose_option, progress_sentence
+from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
+                                        furniture_mentions, model_choice,
+                                        progress_sentence, unused_mentions)
 from assistant.dialogue.intents import classify, teach_phrase
 from assistant.dialogue.memory import ObjectMemory
 from assistant.dialogue.services import Interrupted, Services, furniture_phrase
@@ -41,7 +43,7 @@ HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table 
 class Turn:
     """One exchange: what was said, the intent, the robot's reply, what it did and how it ended.
 
-    ``action``: ``answer``, ``describe``, ``fetch``, ``clarify``, ``teach``, ``stop``, ``none``;
+    ``action``: ``answer``, ``describe``, ``fetch``, ``search``, ``clarify``, ``teach``, ``stop``, ``none``;
     ``outcome``: ``answered``, ``asked``, ``started``, ``success``, ``failed``, ``stopped``,
     ``cancelled``, ``not_understood``, ``busy``; ``seconds``: time to the reply (wall clock).
     """
@@ -252,6 +254,15 @@ class DialogueManager:
                             "object": obj}
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
                               source="memory", memory=seen.to_dict())
+        if seen is not None and seen.x_m is not None:  # the way to where the robot saw it
+            result = self._describe(obj, style, seen)
+            if result.found:
+                reply = f"{result.description} (That is where I saw it {self.memory.age(seen)}.)"
+                return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
+                                  source="memory", style=style, nodes=list(result.nodes), found=True,
+                                  memory=seen.to_dict())
+        if self.services.search_mode == "sensed":
+            return self._search(text, intent.name, obj, style, start)
         result = self._describe(obj, style)
         if not result.found:
             return self._turn(text, intent.name, result.description, "describe", "answered", start,
@@ -268,12 +279,28 @@ class DialogueManager:
         return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
                           source="simulator", style=style, nodes=list(result.nodes), found=True)
 
-    def _describe(self, obj: str, style: str):
-        """The generation layer's answer, the way ``assistant where`` composes it (oracle search:
-        the object's position comes from the simulator's world file)."""
-        from assistant.generation import not_found_description, oracle_sighting
+    def _search(self, said: str, intent_name: str, obj: str, style: str, start: float,
+                lead: str | None = None) -> Turn:
+        """Start the robot's own search for ``obj`` (a worker thread, like a fetch)."""
+        if self.busy:
+            return self._turn(said, intent_name, "I'm still busy with the last task — say \"stop\" first.",
+                              "none", "busy", start)
+        reply = lead or f"I haven't seen your {obj} yet — I'll go and look for it."
+        return self._start_job("search", said, reply, obj, None, obj, start, intent_name=intent_name,
+                               style=style, source="search", object=obj)
 
-        sighting = oracle_sighting(self.world, self.scene, obj)
+    def _describe(self, obj: str, style: str, seen=None):
+        """The generation layer's answer, the way ``assistant where --search oracle`` composes it
+        (the furniture from the simulator's world file; the object's position from there too, or
+        from the memory's sighting ``seen``)."""
+        from assistant.generation import ObjectSighting, not_found_description, oracle_sighting
+
+        if seen is not None:
+            from assistant.geometry import Pose2D
+
+            sighting = ObjectSighting(obj, seen.x_m, seen.y_m, 0.7, seen.room, Pose2D(seen.x_m, seen.y_m, 0.0), 0.0)
+        else:
+            sighting = oracle_sighting(self.world, self.scene, obj)
         if sighting is None:
             return not_found_description(obj, self.rooms)
         listener = self.world.start if style == "dynamic" else None
@@ -332,7 +359,11 @@ class DialogueManager:
                 again = self.services.parser(self.world).parse(retry).plan
                 if again.room == named[0]:
                     text, plan = retry, again
-        has_plan = bool(plan.nodes or plan.room or plan.object)
+        mentions = furniture_mentions(parsed.analysis.tokens, parsed.analysis.pos, self.world, self.scene)
+        # the object named in the words when the plan lost it ("get the mug from the table")
+        obj = plan.object or (self._object_in(" ".join(str(t).lower() for t in parsed.analysis.tokens))[0]
+                              if plan.nodes or plan.room or mentions else None)
+        has_plan = bool(plan.nodes or plan.room or plan.object or (mentions and obj))
         if not has_plan:
             if unused:
                 words = _join([f"'{w}'" for w in unused[:3]])
@@ -341,19 +372,24 @@ class DialogueManager:
                                   "to hear what I can do.", "none", "not_understood", start, unknown=unused)
             return self._turn(said, "command", "Sorry, I didn't understand that. Say \"help\" to hear what I can "
                               "do.", "none", "not_understood", start)
-        if nouns and not force:
-            word = nouns[0]
-            self.pending = {"kind": "word", "word": word, "text": text, "original": said}
-            return self._turn(said, "command", f"I don't know the word '{word}' — is it a table, a chair, a "
-                              "couch or a bed?", "clarify", "asked", start, unknown=unused, plan=plan.to_dict())
+        strange = [m for m in mentions if not m.here and m.said not in self.synonyms]
+        if not force and (nouns or strange):
+            # a word the robot cannot tie to anything in this home: name it back and ask
+            first = strange[0] if strange and (not nouns or strange[0].category is not None) else None
+            word = first.said if first is not None else nouns[0]
+            suggest = first.category if first is not None else None
+            self.pending = {"kind": "word", "word": word, "text": text, "original": said, "suggest": suggest}
+            question = f"is it {article(suggest)} {suggest}?" if suggest else \
+                "is it a table, a chair, a couch or a bed?"
+            return self._turn(said, "command", f"I don't know the word '{word}' — {question}", "clarify", "asked",
+                              start, unknown=[word] + [w for w in unused if w != word], plan=plan.to_dict())
         if self.busy:
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
         room = plan.room
-        obj = plan.object
         if room is None:
             seen = self.memory.recall(self.world.name, obj) if obj else None
-            if seen is not None and seen.room and not plan.nodes:
+            if seen is not None and seen.room and not plan.nodes and not mentions:
                 return self._start_fetch(said, self._fetch_text(obj, seen.phrase, seen.room), seen.room, obj,
                                          start, memory=seen.to_dict())
             if seen is not None and seen.room:
@@ -366,20 +402,34 @@ class DialogueManager:
                 return self._turn(said, "command", f"Which room should I look for {what} in — {rooms}?",
                                   "clarify", "asked", start, missing="room", plan=plan.to_dict())
         if not force:
-            for flag in plan.flags:
-                if flag.startswith("ambiguous_target:"):
-                    word = flag.split(":")[1]
-                    turn = self._ask_which(said, text, word, room, obj, start)
-                    if turn is not None:
-                        return turn
-            word = next((n.target for n in plan.nodes if not getattr(n, "referenced", True)
-                         and n.target in FURNITURE_CHOICES), None)
-            if word and room:
-                turn = self._ask_which(said, text, word, room, obj, start)
+            dropped = unused_mentions(mentions, plan)
+            words = [flag.split(":")[1] for flag in plan.flags if flag.startswith("ambiguous_target:")]
+            words += [n.target for n in plan.nodes if not getattr(n, "referenced", True)
+                      and n.target in FURNITURE_CHOICES]
+            words += [m.category for m in dropped if m.category in FURNITURE_CHOICES]
+            for word in dict.fromkeys(words):
+                turn = self._which_or_go(said, text, word, room, obj, start, mentions, dropped=bool(dropped))
                 if turn is not None:
                     return turn
+        if obj and plan.object is None and not plan.nodes and room:  # the parser lost the object
+            text = self._fetch_text(obj, None, room)
         return self._start_fetch(said, text, room, obj, start, plan=plan.to_dict(),
                                  ignored=unused)
+
+    def _which_or_go(self, said, text, word, room, obj, start, mentions, dropped=False) -> Turn | None:
+        """Several ``word``s in the room and nothing said picks one: a model name that singles
+        one out ("the hexagon table") picks it, else ask which; when the plan dropped the
+        furniture word and the room has just one, go to that one."""
+        items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
+        if room is None or not items:
+            return None
+        chosen = model_choice(mentions, items) if len(items) > 1 else (items[0] if dropped else None)
+        if chosen is not None:
+            phrase = furniture_phrase(self.services.describer, self.world, self.scene, chosen)
+            turn = self._start_fetch(said, self._fetch_text(obj, phrase, chosen.room), chosen.room, obj, start)
+            turn.data["chosen"] = chosen.id
+            return turn
+        return self._ask_which(said, text, word, room, obj, start)
 
     def _ask_which(self, said, text, word, room, obj, start) -> Turn | None:
         items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
@@ -389,8 +439,12 @@ class DialogueManager:
         options = []
         for item in items:
             phrase = furniture_phrase(describer, self.world, self.scene, item)
-            options.append({"id": item.id, "phrase": phrase, "room": item.room})
+            options.append({"id": item.id, "phrase": phrase, "room": item.room, "model": item.model})
         said_options = [("the one " + re.sub(rf"^on the {word} ", "", o["phrase"])) for o in options]
+        if len(set(said_options)) < len(said_options) or any(o["phrase"] == f"on the {word}" for o in options):
+            said_options = distinct_phrases(self.world, self.scene, items)
+            for o, phrase in zip(options, said_options):
+                o["phrase"] = phrase.replace("the one ", f"the {word} ", 1)
         count = NUMBER_WORDS.get(len(items), str(len(items)))
         reply = f"There are {count} {word}s in the {room} — {_join(said_options, 'or')}?"
         self.pending = {"kind": "which", "word": word, "room": room, "object": obj, "options": options,
@@ -403,6 +457,9 @@ class DialogueManager:
         norm = intent.text
         if p["kind"] == "confirm":
             self.pending = None
+            if intent.name == "yes" and p.get("search"):
+                return self._search(text, "yes", p["search"], "static", start,
+                                    lead=f"OK, I'll look for your {p['search']}.")
             if intent.name == "yes":
                 return self._command(p["command"], start, force=True, original=text)
             if intent.name == "no":
@@ -414,7 +471,7 @@ class DialogueManager:
             if choice is None and norm in ("sofa",):
                 choice = "couch"
             if intent.name == "yes" and choice is None:
-                choice = "table"
+                choice = p.get("suggest") or "table"
             if choice is not None:
                 self.pending = None
                 self.synonyms[word.lower()] = choice
@@ -456,16 +513,23 @@ class DialogueManager:
     def _choose(self, norm: str, text: str, p: dict) -> int | None:
         return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)
 
-    # ------------------------------------------------------------------ running a fetch
+    # ------------------------------------------------------------------ running a task
     def _start_fetch(self, said, text, room, obj, start, **data) -> Turn:
         reply = f"Going to the {room}." if room else "On my way."
-        turn = self._turn(said, "command", reply, "fetch", "started", start, command=text, room=room,
-                          object=obj, **data)
+        return self._start_job("fetch", said, reply, text, room, obj, start, command=text, room=room,
+                               object=obj, **data)
+
+    def _start_job(self, kind: str, said: str, reply: str, text: str, task_room, task_object, start,
+                   intent_name="command", style: str = "static", **data) -> Turn:
+        """Reply at once and run a fetch (``text``: the command) or a search (``text``: the
+        object) in a worker thread; its final :class:`Turn` comes through ``say``/``on_finish``."""
+        turn = self._turn(said, intent_name, reply, kind, "started", start, **data)
         turn.final = False
         previous = self._job
-        job = _Job(threading.Event())
-        job.thread = threading.Thread(target=self._run_fetch, args=(job, previous, text, room, obj),
-                                      name="assistant-fetch", daemon=True)
+        job = _Job(threading.Event(), kind=kind)
+        job.thread = threading.Thread(target=self._run_job,
+                                      args=(job, previous, text, task_room, task_object, style),
+                                      name=f"assistant-{kind}", daemon=True)
         self._job = job
         job.thread.start()
         return turn
@@ -477,12 +541,17 @@ class DialogueManager:
         except Exception:  # a front end's problem must not kill the fetch
             pass
 
-    def _run_fetch(self, job: "_Job", previous: "_Job | None", text: str, room: str | None,
-                   obj: str | None) -> None:
+    def _run_job(self, job: "_Job", previous: "_Job | None", text: str, room: str | None,
+                 obj: str | None, style: str = "static") -> None:
+        from assistant.dialogue.seen import SeenRecorder
+
         start = time.perf_counter()
-        if previous is not None:  # a stopped fetch winds down at its robot's next call
+        if previous is not None:  # a stopped task winds down at its robot's next call
             previous.thread.join(30.0)
         words = {f.id: f.word for f in self.world.scene(self.scene).furniture}
+        recorder = SeenRecorder(self.memory, self.world.name, source=job.kind)
+        before = self.memory.recall(self.world.name, obj) if obj else None
+        announced: set[str] = set()
 
         def on_event(name: str, data: dict) -> None:
             if job.stop.is_set():
@@ -492,27 +561,49 @@ class DialogueManager:
                     self.on_event(name, data)
                 except Exception:
                     pass
+            if name == "objects_seen":
+                recorder.on_event(name, data)
+                if job.kind == "search" and obj and obj in recorder.latest and obj not in announced:
+                    announced.add(obj)
+                    self._speak(f"I can see your {obj}!")
             sentence = progress_sentence(name, data, words)
             if sentence:
                 self._speak(sentence)
             if job.stop.is_set():
                 raise Interrupted()
 
+        def stopped(furniture=None) -> Turn:
+            summary = self._remember_seen(recorder, furniture)
+            return Turn(text, "command", "I've stopped.", job.kind, "stopped",
+                        {"command": text, "seen": summary["seen"]}, time.perf_counter() - start)
+
         try:
-            report = self.services.fetch(text, self.world.name, self.scene, on_event, stop=job.stop,
-                                         on_pose=self.on_pose)
-        except Interrupted:
-            final = Turn(text, "command", "I've stopped.", "fetch", "stopped", {"command": text},
-                         time.perf_counter() - start)
+            if job.kind == "search":
+                outcome = self.services.search(text, self.world.name, self.scene, on_event, stop=job.stop,
+                                               on_pose=self.on_pose)
+            else:
+                outcome = self.services.fetch(text, self.world.name, self.scene, on_event, stop=job.stop,
+                                              on_pose=self.on_pose)
+        except Interrupted as error:
+            final = stopped(getattr(error, "furniture", None))
         except Exception as error:
-            final = Turn(text, "command", f"Sorry, I couldn't do that ({error}).", "fetch", "failed",
+            self._remember_seen(recorder, None)
+            final = Turn(text, "command", f"Sorry, I couldn't do that ({error}).", job.kind, "failed",
                          {"command": text}, time.perf_counter() - start)
         else:
-            if job.stop.is_set():
-                final = Turn(text, "command", "I've stopped.", "fetch", "stopped", {"command": text},
+            try:
+                if job.stop.is_set():
+                    final = stopped(getattr(outcome, "furniture", None))
+                elif job.kind == "search":
+                    final = self._finish_search(text, outcome, recorder, style, start)
+                else:
+                    recorder.add(list(getattr(outcome, "seen", None) or []))  # the final view's sightings too
+                    summary = self._remember_seen(recorder, getattr(outcome, "furniture", None))
+                    final = self._finish(text, outcome, obj, start, summary, before)
+            except Exception as error:  # a bug here must still end the task with a reply
+                final = Turn(text, "error", f"Sorry, something went wrong inside me after the {job.kind} "
+                             f"({type(error).__name__}: {error}).", job.kind, "failed", {"command": text},
                              time.perf_counter() - start)
-            else:
-                final = self._finish(text, report, obj, start)
         job.final = final
         self.history.append(final)
         self._speak(final.reply)
@@ -522,12 +613,51 @@ class DialogueManager:
             except Exception:
                 pass
 
-    def _finish(self, text, report, obj, start) -> Turn:
+    def _remember_seen(self, recorder, furniture) -> dict:
+        """Write what the task saw to memory (phrases composed from the perceived furniture)."""
+        try:
+            return recorder.finish(furniture, self.services.describer, self.world.floorplan)
+        except Exception as error:  # memory must not turn a finished task into a crash
+            return {"seen": sorted(recorder.latest), "moved": [], "places": {}, "problem": str(error)}
+
+    def _finish_search(self, name: str, result, recorder, style: str, start: float) -> Turn:
+        """The search's answer: where the object is (composed from what the robot perceived), or
+        the honest "I looked in … and did not find …"."""
+        if result.found and result.placed is not None:
+            recorder.add([result.placed])
+        summary = self._remember_seen(recorder, getattr(result, "furniture", None))
+        data = {"object": name, "found": bool(result.found), "status": result.status,
+                "rooms_searched": list(result.rooms_searched), "seen": summary["seen"], "source": "search",
+                "search_seconds": round(float(getattr(result, "wall_seconds", 0.0) or 0.0), 2)}
+        listener = self.world.start if style == "dynamic" else None
+        try:
+            answer = self.services.describer.describe_search(result, self.world.floorplan, listener_pose=listener,
+                                                             style=style)
+            description = answer.description
+        except Exception as error:  # the sighting is in memory anyway
+            room = getattr(result.sighting, "room", None)
+            description = (f"The {name} is in the {room}." if result.found and room else
+                           f"I couldn't describe where the {name} is ({error}).")
+        if result.found:
+            reply = f"Found it: {description[0].lower() + description[1:]}"
+            return Turn(name, "where", reply, "search", "success", data, time.perf_counter() - start)
+        if result.status == "timeout":
+            rooms = _join(["the " + r for r in result.rooms_searched]) if result.rooms_searched else "nowhere"
+            reply = f"I searched {rooms} but ran out of time before I found your {name}."
+        else:
+            reply = description
+        if self.memory.recall(self.world.name, name) is not None and name not in summary["seen"]:
+            self.memory.forget(self.world.name, name)
+        return Turn(name, "where", reply, "search", "failed", data, time.perf_counter() - start)
+
+    def _finish(self, text, report, obj, start, summary: dict | None = None, before=None) -> Turn:
         obj = obj or report.object
+        summary = summary or {"seen": [], "moved": [], "places": {}}
         furniture = report.target_furniture or {}
         item = next((f for f in self.world.scene(self.scene).furniture if f.id == furniture.get("id")), None)
         data = {"command": text, "failure": report.failure, "final_pose": report.final_pose,
-                "target_furniture": furniture or None, "executor_message": report.message}
+                "target_furniture": furniture or None, "executor_message": report.message,
+                "seen": summary["seen"]}
         if report.failure and report.failure != "not_visible":
             reply = f"Sorry, I couldn't do it: {report.message or report.failure}."
             return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
@@ -544,25 +674,58 @@ class DialogueManager:
             where = f"{phrase} in the {room}" if room else phrase
         else:
             phrase, where = None, "here"
+        place = summary["places"].get(obj) if obj else None
         if obj and report.object_seen:
-            before = self.memory.recall(self.world.name, obj)
-            self.memory.remember(self.world.name, obj, item.room if item else None, item.id if item else None,
-                                 item.word if item else None, phrase)
-            moved = before is not None and before.furniture != (item.id if item else None)
+            if place is not None:  # described from the robot's own view of the furniture
+                where = _place_text(place) or where
+            else:  # the detector did not report it on the way (a stand-in, or a miss): the target place
+                self.memory.remember(self.world.name, obj, item.room if item else None, item.id if item else None,
+                                     item.word if item else None, phrase, source="fetch")
+            moved = obj in summary["moved"] or (
+                before is not None and place is None and before.furniture != (item.id if item else None))
             reply = f"Here it is: I can see your {obj} {where}." + (
                 " It wasn't where I saw it last; I've updated my memory." if moved else "")
             data["remembered"] = True
             return Turn(text, "command", reply, "fetch", "success", data, time.perf_counter() - start)
         if obj:
-            before = self.memory.recall(self.world.name, obj)
-            if before is not None and item is not None and before.furniture == item.id:
+            here = f"I'm at the {item.word if item else 'place you described'}, but I can't see your {obj} there."
+            if place is not None:  # seen somewhere else on the way
+                reply = f"{here} I did see it {_place_text(place)} on my way — I've noted that."
+                data["seen_elsewhere"] = place
+                return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
+            if before is not None and _near(before, item, furniture):
                 self.memory.forget(self.world.name, obj)
-            reply = f"I'm at the {item.word if item else 'place you described'}, but I can't see your {obj} {where}."
-            return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
+                data["forgot"] = True
+                here += " It isn't where I saw it last, so I've forgotten that place."
+            if self.services.search_mode == "sensed":
+                self.pending = {"kind": "confirm", "search": obj, "object": obj}
+                here += " Shall I look for it?"
+            return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start)
         if item is not None:
             where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
         return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                     time.perf_counter() - start)
+
+
+def _place_text(place: dict) -> str | None:
+    """"on the table by the chair in the bedroom" from a memory entry's dict."""
+    phrase = place.get("phrase") or (f"on the {place['furniture_word']}" if place.get("furniture_word") else None)
+    room = place.get("room")
+    if phrase and room:
+        return f"{phrase} in the {room}"
+    return phrase or (f"in the {room}" if room else None)
+
+
+def _near(before, item, furniture: dict, distance_m: float = 1.0) -> bool:
+    """Whether a remembered sighting lies on (or by) the furniture the fetch went to."""
+    if item is not None and before.furniture == item.id:
+        return True
+    centre = furniture.get("centre") if furniture else None
+    if centre is None and item is not None and hasattr(item, "x"):
+        centre = (item.x, item.y)
+    if centre is None or before.x_m is None:
+        return False
+    return ((before.x_m - float(centre[0])) ** 2 + (before.y_m - float(centre[1])) ** 2) ** 0.5 <= distance_m
 
 
 @dataclass
@@ -576,11 +739,12 @@ class _Seen:
 
 @dataclass
 class _Job:
-    """One fetch in its worker thread."""
+    """One task (``fetch`` or ``search``) in its worker thread."""
 
     stop: threading.Event
     thread: threading.Thread | None = None
     final: Turn | None = None
+    kind: str = "fetch"
 
 
 _POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -1,9 +1,10 @@
 """Object memory: what the robot has seen, where and when, kept in a JSON file.
 
 Every sighting is stored per home (world name) and object name: the furniture it was on (id,
-word and a short phrase such as "on the table to the right of the bed"), the room, the time
-(seconds since the epoch) and what reported it (``fetch``: seen in the robot's camera at the
-end of a fetch). The file is rewritten atomically (:func:`assistant.fileio.atomic_write_text`)
+word and a short phrase such as "on the table to the right of the bed"), the room, the
+position (metres, world frame), the time (seconds since the epoch) and which task saw it
+(``fetch``, ``search``; every object the robot's object detector reports during a task is
+recorded, see :mod:`assistant.dialogue.seen`). The file is rewritten atomically (:func:`assistant.fileio.atomic_write_text`)
 after every change, so a crash leaves the old or the new memory, never half of one.
 """
 
@@ -18,8 +19,9 @@ from pathlib import Path
 
 from assistant.fileio import atomic_write_text
 
-#: version written into the file; a file with another version is refused
-MEMORY_VERSION = 1
+#: version written into the file; version 1 files (no position) are read too, others refused
+MEMORY_VERSION = 2
+READABLE_VERSIONS = (1, 2)
 
 
 @dataclass
@@ -34,6 +36,8 @@ class Sighting:
     phrase: str | None = None  # "on the table to the right of the bed"
     time_s: float = 0.0
     source: str = "fetch"
+    x_m: float | None = None  # where the object was seen (world frame, metres)
+    y_m: float | None = None
 
     def to_dict(self) -> dict:
         return asdict(self)
@@ -81,7 +85,7 @@ class ObjectMemory:
     def _load(self) -> None:
         try:
             data = json.loads(self.path.read_text(encoding="utf-8"))
-            if not isinstance(data, dict) or data.get("version") != MEMORY_VERSION:
+            if not isinstance(data, dict) or data.get("version") not in READABLE_VERSIONS:
                 raise ValueError(f"expected an object with version {MEMORY_VERSION}")
             for i, item in enumerate(data.get("sightings", [])):
                 try:
@@ -102,13 +106,17 @@ class ObjectMemory:
 
     def remember(self, world: str, name: str, room: str | None, furniture: str | None = None,
                  furniture_word: str | None = None, phrase: str | None = None,
-                 time_s: float | None = None, source: str = "fetch") -> Sighting:
-        """Store (or replace) where ``name`` was seen, and save."""
+                 time_s: float | None = None, source: str = "fetch", x_m: float | None = None,
+                 y_m: float | None = None, save: bool = True) -> Sighting:
+        """Store (or replace) where ``name`` was seen, and save (unless ``save`` is False:
+        several changes, then one :meth:`save`)."""
         s = Sighting(name, world, room, furniture, furniture_word, phrase,
-                     self.clock() if time_s is None else float(time_s), source)
+                     self.clock() if time_s is None else float(time_s), source,
+                     None if x_m is None else round(float(x_m), 3), None if y_m is None else round(float(y_m), 3))
         with self._lock:
             self._items[(world, name)] = s
-        self.save()
+        if save:
+            self.save()
         return s
 
     def recall(self, world: str, name: str) -> Sighting | None:

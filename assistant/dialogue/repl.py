@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
-import signal
 import sys
 import threading
 from pathlib import Path
@@ -33,10 +32,12 @@ class ChatSession:
         stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%S.%fZ")
         self.transcript_path = Path(args.transcripts or data / "transcripts") / f"{stamp}.json"
         self.history_path = data / "chat_history"
-        self.services = Services(perception=args.perception, seed=args.seed)
+        self.services = Services(perception=args.perception, seed=args.seed,
+                                 search=getattr(args, "search", "sensed"))
         self.view = None
         self._print_lock = threading.RLock()
         self._interrupts = 0
+        self._interrupt_lock = threading.Lock()
         self._reading = False
         self._leaving = False
         self.interactive = self.stdin.isatty()
@@ -49,7 +50,7 @@ class ChatSession:
     # ----------------------------------------------------------------- output
     def _print(self, text: str, redraw: bool = False) -> None:
         with self._print_lock:
-            if redraw and self.interactive:
+            if redraw and self.interactive and self._reading:
                 self.out.write("\r\033[K" + text + "\n" + PROMPT)
                 try:
                     import readline
@@ -140,22 +141,26 @@ class ChatSession:
             self._print(f"(memory: {self.memory.load_problem})")
         self._print("(Ctrl-C stops the robot, Ctrl-C twice leaves, Ctrl-D leaves; transcript: "
                     f"{self.transcript_path})")
-        previous = None
-        if threading.current_thread() is threading.main_thread():
-            previous = signal.signal(signal.SIGINT, self._on_interrupt)
+        from assistant.dialogue.interrupts import InterruptWatcher
+
+        watcher = InterruptWatcher(self._on_interrupt, lambda: self._reading)
         try:
+            watcher.start()
             while not self._leaving:
                 try:
                     self._reading = True
+                    if self._leaving:  # a second Ctrl-C came while the last line was handled
+                        break
                     line = self._read()
-                except KeyboardInterrupt:  # _on_interrupt did the work
+                except KeyboardInterrupt:  # the watcher wants the loop to look at _leaving
                     continue
                 except EOFError:
                     self._end_of_input()
                     break
                 finally:
                     self._reading = False
-                self._interrupts = 0
+                with self._interrupt_lock:
+                    self._interrupts = 0
                 if not line.strip():
                     continue
                 try:
@@ -165,31 +170,35 @@ class ChatSession:
                         self._print(f"robot: {turn.reply}")
                     if turn.action == "teach" and turn.outcome == "started":
                         self._teach(turn)
-                except KeyboardInterrupt:
+                except KeyboardInterrupt:  # Ctrl-C without the watcher (not the main thread)
+                    self._on_interrupt()
                     continue
             if self._leaving:
                 self._print("\nGoodbye.")
         finally:
-            if previous is not None:
-                signal.signal(signal.SIGINT, previous)
+            watcher.stop()
             self.manager.close(timeout=5.0)
             self._save_history(readline)
             if self.view is not None:
                 self.view.close()
         return 0
 
-    def _on_interrupt(self, signum, frame) -> None:
-        """Ctrl-C: the first stops the robot, a second in a row leaves."""
-        self._interrupts += 1
-        if self._interrupts >= 2:
-            self._leaving = True
+    def _on_interrupt(self) -> bool:
+        """Ctrl-C (called by the watcher thread the moment it arrives): the first stops the
+        robot, a second in a row leaves. True when the loop must leave its read."""
+        with self._interrupt_lock:
+            self._interrupts += 1
+            leaving = self._interrupts >= 2
+            if leaving:
+                self._leaving = True
+        if leaving:
             self.manager.stop()
-        elif self.manager.stop():
-            self._print("\nrobot: Stopping. (Ctrl-C again to leave)")
+            return True
+        if self.manager.stop():
+            self._print("robot: Stopping. (Ctrl-C again to leave)", redraw=True)
         else:
-            self._print("\n(Ctrl-C again to leave)")
-        if self._reading or self._leaving:
-            raise KeyboardInterrupt
+            self._print("(Ctrl-C again to leave)", redraw=True)
+        return False
 
     def _end_of_input(self) -> None:
         if self.manager.busy:

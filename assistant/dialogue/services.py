@@ -15,7 +15,11 @@ from dataclasses import dataclass, field
 
 
 class Interrupted(Exception):
-    """Raised from the fetch's progress callback when the person said "stop"."""
+    """Raised from the fetch's progress callback when the person said "stop". ``furniture``:
+    the furniture the robot had perceived when it stopped (set by :func:`run_trial` and
+    :meth:`Services.search`), so what it saw can still be described."""
+
+    furniture: list | None = None
 
 
 @dataclass
@@ -31,37 +35,55 @@ class FetchReport:
     object_seen: bool = False
     wall_seconds: float = 0.0
     data: dict = field(default_factory=dict)
+    seen: list = field(default_factory=list)  # PlacedSighting: the latest of each object seen
+    furniture: list | None = None  # the perceived furniture entities at the end (phrases)
 
 
 def fetch_report(data: dict) -> FetchReport:
-    """A :class:`FetchReport` from ``TrialOutcome.data`` (``assistant fetch --json`` fields)."""
+    """A :class:`FetchReport` from ``TrialOutcome.data`` (``assistant fetch --json`` fields);
+    ``object_seen`` is the robot's own object detector on the final frame when the data has it
+    (``target_detected``), else the simulator's visibility check."""
     executor = data.get("executor") or {}
     visible = data.get("target_visible") or {}
-    try:
-        from assistant.executor.trial import is_visible
-        seen = bool(is_visible(visible))
-    except ImportError:
-        seen = bool(data.get("success"))
+    if "target_detected" in data:
+        seen = bool(data["target_detected"])
+    else:
+        try:
+            from assistant.executor.trial import is_visible
+            seen = bool(is_visible(visible))
+        except ImportError:
+            seen = bool(data.get("success"))
     return FetchReport(bool(data.get("success")), data.get("failure"), executor.get("message", ""),
                        data.get("final_pose"), executor.get("target_furniture"), data.get("object"),
-                       seen, float(data.get("wall_seconds") or 0.0), data)
+                       seen, float(data.get("wall_seconds") or 0.0),
+                       {k: v for k, v in data.items() if not k.startswith("_")},
+                       list(data.get("_seen") or []), data.get("_furniture"))
 
 
 class Services:
     """Lazily built parser / describer / fetch runner, shared by every conversation.
 
-    ``perception``: ``oracle`` or ``sensed`` for the fetch runner; ``parser``, ``describer``,
-    ``fetcher`` may be given (a fetcher is any callable ``(text, world, scene, on_event) ->
-    FetchReport``).
+    ``perception``: ``oracle`` or ``sensed`` furniture perception for fetches and searches;
+    ``search``: how "where is my X?" is answered when memory has nothing — ``sensed`` (the robot
+    searches the home, :class:`~assistant.generation.search.ObjectSearch`) or ``oracle`` (the
+    simulator's world file, labelled as such); ``parser``, ``describer``, ``fetcher``,
+    ``searcher`` may be given (a fetcher is any callable ``(text, world, scene, on_event) ->
+    FetchReport``, a searcher ``(name, world, scene, on_event) -> SearchResult``).
     """
 
     def __init__(self, perception: str = "oracle", parser=None, describer=None, fetcher=None,
-                 seed: int = 0):
+                 seed: int = 0, search: str = "sensed", searcher=None):
+        from assistant.errors import UnknownNameError
+
+        if search not in ("sensed", "oracle"):
+            raise UnknownNameError("search", str(search), ("sensed", "oracle"))
         self.perception = perception
+        self.search_mode = search
         self.seed = seed
         self._parser = parser
         self._describer = describer
         self._fetcher = fetcher
+        self._searcher = searcher
         self._runner = None
         self._lock = threading.RLock()
         self._warm: threading.Thread | None = None
@@ -104,6 +126,34 @@ class Services:
             return self._fetcher(text, world, scene, on_event)
         return fetch_report(run_trial(self.runner(), text, world, scene, self.perception, self.seed,
                                       on_event=on_event, stop=stop, on_pose=on_pose))
+
+    def search(self, name: str, world: str, scene: str, on_event=None, stop=None, on_pose=None):
+        """Search the simulated home for object ``name`` from the world's start pose (blocking;
+        call it from a worker thread): the generation layer's
+        :class:`~assistant.generation.search.ObjectSearch` with this session's furniture
+        perception and the simulator's object detector, the robot wrapped in a
+        :class:`StoppableRobot`. Returns its :class:`~assistant.generation.search.SearchResult`."""
+        if self._searcher is not None:
+            return self._searcher(name, world, scene, on_event)
+        from assistant.executor.sensing import make_furniture_source
+        from assistant.generation.search import ObjectSearch
+        from assistant.perception.objects import SimObjectDetector
+        from assistant.sim import OdometryNoise, SimRobot
+        from assistant.world import load_world
+
+        runner = self.runner()
+        w = load_world(world)
+        sc = w.scene(scene)
+        source = make_furniture_source(self.perception, w, sc.name,
+                                       detector=runner.detector if self.perception == "sensed" else None)
+        detector = SimObjectDetector.for_scene(sc, seed=self.seed)
+        task = ObjectSearch(w, detector, source, on_event=on_event)
+        with SimRobot(w, sc.name, seed=self.seed, odometry_noise=OdometryNoise() if runner.noise else None) as robot:
+            try:
+                return task.run(StoppableRobot(robot, stop, on_pose), " ".join(name.lower().split()))
+            except Interrupted as error:
+                error.furniture = source.furniture()
+                raise
 
     def warm_up(self, world, background: bool = True, scene: str = "original") -> None:
         """Build the parser, describer (and its environment model) and fetch runner now (in a
@@ -177,6 +227,7 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
     from assistant.executor.outcome import ExecutionStatus
     from assistant.executor.sensing import make_furniture_source
     from assistant.executor.trial import is_visible, object_visibility
+    from assistant.perception.objects import SimObjectDetector
     from assistant.sim import OdometryNoise, SimRobot
     from assistant.world import load_world
 
@@ -186,14 +237,29 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
     plan = runner.parser(w).parse(text).plan
     source = make_furniture_source(perception, w, scene,
                                    detector=runner.detector if perception == "sensed" else None)
-    task = FetchTask(w, source, runner.policies, max_sim_seconds=runner.max_sim_seconds, on_event=on_event)
+    # the robot's object detector (the simulator's model of one): every object it sees on the
+    # way becomes an ``objects_seen`` event for the memory
+    detector = SimObjectDetector.for_scene(w.scene(scene), seed=seed)
+    task = FetchTask(w, source, runner.policies, max_sim_seconds=runner.max_sim_seconds, on_event=on_event,
+                     object_detector=detector)
     with SimRobot(w, scene, seed=seed, odometry_noise=OdometryNoise() if runner.noise else None) as robot:
-        result = task.run(StoppableRobot(robot, stop, on_pose), plan)
+        try:
+            result = task.run(StoppableRobot(robot, stop, on_pose), plan)
+        except Interrupted as error:
+            error.furniture = source.furniture()
+            raise
         final_frame = robot.depth_frame()
         true_pose = robot.ground_truth_pose
     obj = plan.object
     known = {o.name for o in w.scene(scene).objects}
     visibility = object_visibility(final_frame, obj if obj in known else None)
+    in_view = detector.detect(final_frame)  # what the robot itself sees at the end
+    seen = list(getattr(result, "seen", []) or [])
+    if in_view:
+        from assistant.executor.sightings import place_sightings
+
+        final = {p.name: p for p in place_sightings(w, source.furniture(), in_view)}
+        seen = [final.pop(p.name, p) for p in seen] + list(final.values())
     if isinstance(result, FetchResult) and not result.success:
         failure = result.status.value
     elif not is_visible(visibility):
@@ -208,7 +274,10 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
             "final_pose": None if p is None else [round(p.x, 3), round(p.y, 3), round(p.theta, 4)],
             "true_final_pose": [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
             "target_visible": visibility, "sim_seconds": round(result.sim_seconds, 2),
-            "wall_seconds": round(time.perf_counter() - start, 3)}
+            "target_detected": bool(obj) and any(s.name == obj for s in in_view),
+            "seen_objects": sorted(p.name for p in seen),
+            "wall_seconds": round(time.perf_counter() - start, 3),
+            "_seen": seen, "_furniture": source.furniture()}
 
 
 def furniture_phrase(describer, world, scene: str, item, listener_in_room: bool = True) -> str:
