@@ -60,6 +60,14 @@ from assistant.world import Entity, World
 HALF_FOV_RAD = math.radians(28.5)
 #: directions of the RDT model as angles in the reference's frame (0 = its front)
 DIRECTION_ANGLES = {"front": 0.0, "left": math.pi / 2, "back": math.pi, "right": -math.pi / 2}
+#: a room's walls as a person entering names them (radians from the entry heading): "the back
+#: wall" is the far one, like "the back of the room" (the generator says it so too), and "the
+#: front wall" is the one ahead
+WALL_ANGLES = {"front": 0.0, "back": 0.0, "left": math.pi / 2, "right": -math.pi / 2}
+#: references that are not furniture (no perceived item to look for)
+PLACE_REFERENCES = ("robot", "room", "move", "wall", "door")
+#: the target word of a node with no target furniture
+NO_TARGET_WORD = "non"
 
 
 @dataclass
@@ -135,7 +143,11 @@ class FetchTask:
     robot for a better view before it commits. ``survey_range_m`` / ``max_unseen_share``: before its first static node the robot looks
     around again from further in when more than that share of the room lies farther than that
     range (metres) from everywhere it has looked (perception finds furniture reliably within a
-    few metres).
+    few metres). ``reference_range_m`` / ``max_looks_for_reference``: when a node names
+    furniture not yet seen in the room ("the table in front of the chair" and no chair seen),
+    the robot looks again, at most that many times, from the free spot that brings the most of
+    the room within that range (metres) of where it has looked, before it settles for the
+    node's other pairs ("against the back wall").
     ``object_detector``: an ``ObjectDetector`` (``assistant/perception/objects.py``) run on every
     depth frame the task receives (the localizer's frames while driving, the look-around and
     observe frames); each frame in which it reports objects becomes an ``objects_seen`` event
@@ -159,6 +171,8 @@ class FetchTask:
     survey_range_m: float = 4.5
     weak_description: float = 0.6
     max_unseen_share: float = 0.5
+    reference_range_m: float = 3.0
+    max_looks_for_reference: int = 2
 
     # ------------------------------------------------------------------ set-up
     def _setup(self, robot) -> None:
@@ -252,24 +266,29 @@ class FetchTask:
         pts = np.column_stack([xs.ravel(), ys.ravel()])
         return pts[point_in_polygon(pts, poly)]
 
-    def _unseen(self, points: np.ndarray) -> np.ndarray:
-        """Which ``points`` lie farther than :attr:`survey_range_m` from every pose the robot
-        has looked around from."""
+    def _unseen(self, points: np.ndarray, range_m: float | None = None) -> np.ndarray:
+        """Which ``points`` lie farther than ``range_m`` (default :attr:`survey_range_m`) from
+        every pose the robot has looked around from."""
+        range_m = self.survey_range_m if range_m is None else range_m
         unseen = np.ones(len(points), dtype=bool)
         for p in self._looked_from:
-            unseen &= np.hypot(points[:, 0] - p.x, points[:, 1] - p.y) > self.survey_range_m
+            unseen &= np.hypot(points[:, 0] - p.x, points[:, 1] - p.y) > range_m
         return unseen
 
-    def _survey(self, room: str, toward: tuple[float, float] | None = None) -> bool:
-        """When more than :attr:`max_unseen_share` of a large room lies beyond perception's
-        range from everywhere the robot has looked (the hk-studio studio seen from its door),
-        look again from the free spot that sees most of the rest (or the one nearest
-        ``toward``, the side the command points to). True when it moved and looked."""
+    def _survey(self, room: str, toward: tuple[float, float] | None = None,
+                max_unseen_share: float | None = None, range_m: float | None = None) -> bool:
+        """When more than ``max_unseen_share`` (default :attr:`max_unseen_share`) of a room
+        lies beyond ``range_m`` (default :attr:`survey_range_m`) from everywhere the robot has
+        looked (the hk-studio studio seen from its door), look again from the free spot that
+        brings most of the rest within that range (or the one nearest ``toward``, the side the
+        command points to). True when it moved and looked."""
+        share = self.max_unseen_share if max_unseen_share is None else max_unseen_share
+        range_m = self.survey_range_m if range_m is None else range_m
         pts = self._room_points(room)
         if len(pts) == 0:
             return False
-        unseen = self._unseen(pts)
-        if unseen.mean() <= self.max_unseen_share:
+        unseen = self._unseen(pts, range_m)
+        if unseen.mean() <= share:
             return False
         if toward is None:
             occ = self.obstacles.occupancy()
@@ -279,7 +298,7 @@ class FetchTask:
                 return False
             rest = pts[unseen]
             gain = (np.hypot(rest[:, None, 0] - spots[None, :, 0], rest[:, None, 1] - spots[None, :, 1])
-                    <= self.survey_range_m).sum(axis=0)
+                    <= range_m).sum(axis=0)
             toward = tuple(spots[int(np.argmax(gain))])
         self._better_view(room, toward)
         return True
@@ -461,6 +480,7 @@ class FetchTask:
             self._surveyed = True
             toward = next((t for t in (self._toward(r, said_from) for r in rdts) if t is not None), None)
             self._survey(room, toward)
+        self._look_for(room, [r.reference for r in rdts if r.reference not in PLACE_REFERENCES] + [node.target])
         for attempt in range(2):
             for rdt in rdts:
                 report.tried.append([rdt.reference, rdt.direction])
@@ -482,6 +502,10 @@ class FetchTask:
                 if moved.status is ExecutionStatus.NO_PATH:  # the policy's pose is unreachable: go near the target
                     moved = self._face(target)
                     report.status, report.message = moved.status.value, moved.message
+                elif self._recover_from_bump(moved):  # touched something unseen near the goal
+                    moved = self._face(target)
+                    report.status = moved.status.value
+                    report.message = f"bumped near the move-to pose, backed off; {moved.message}"
                 return report, target if moved.success else None, score_map
             if looked_again:
                 break
@@ -490,6 +514,17 @@ class FetchTask:
         wanted = " or ".join(sorted({r.reference for r in rdts if r.reference not in ("robot", "room")}))
         report.message = (f"no {wanted} with a {node.target} " if wanted else f"no {node.target} ") + f"seen in the {room}"
         return report, None, None
+
+    def _look_for(self, room: str, words) -> None:
+        """While some furniture the node names (``words``: reference and target words) is not
+        seen in ``room``, look again from further in (:meth:`_survey` with
+        :attr:`reference_range_m`), at most :attr:`max_looks_for_reference` times."""
+        words = sorted({w for w in words if w and w != NO_TARGET_WORD})
+        for _ in range(self.max_looks_for_reference):
+            if all(self._in_room(room, w) for w in words):
+                return
+            if not self._survey(room, max_unseen_share=0.05, range_m=self.reference_range_m):
+                return
 
     def _dynamic_node(self, rdt, room: str):
         report = NodeReport(str(rdt), "dynamic", ExecutionStatus.SUCCESS.value)
@@ -638,7 +673,7 @@ class FetchTask:
         if rdt.reference == "wall":
             # "the desk against the left wall": close to a wall that lies on that side of the
             # robot (as it stood when told), wherever along the wall
-            return 0.05 + self._wall_fit(tar, pose, DIRECTION_ANGLES.get(rdt.direction))
+            return 0.05 + self._wall_fit(tar, pose, WALL_ANGLES.get(rdt.direction))
         if ref is None:
             ox, oy, front = pose.x, pose.y, pose.theta
             # the robot's left/right: things to its side, ahead or level, not behind it
@@ -751,7 +786,8 @@ class FetchTask:
         unreferenced target after some steps): a few metres that way from where it was said."""
         if rdt.reference not in ("robot", "room", "move", "wall"):
             return None
-        turn = DIRECTION_ANGLES.get(rdt.direction, 0.0) / 2  # that side and ahead: the room lies ahead
+        angles = WALL_ANGLES if rdt.reference == "wall" else DIRECTION_ANGLES
+        turn = angles.get(rdt.direction, 0.0) / 2  # that side and ahead: the room lies ahead
         heading = said_from.theta + turn
         return (said_from.x + 4.0 * math.cos(heading), said_from.y + 4.0 * math.sin(heading))
 
@@ -776,12 +812,50 @@ class FetchTask:
 
     # ------------------------------------------------------------------ facing the target
     def _in_view(self, target: Entity, pose: Pose2D | None = None) -> bool:
+        """Whether ``target`` is near enough, inside the field of view and not hidden behind
+        other perceived furniture (:meth:`_clear_sight`) from ``pose`` (default: now)."""
         pose = pose or self._pose()
         x, y = entity_centre(target)
         local = pose.to_local(np.array([[x, y]]))[0]
         dist = math.hypot(*local)
         radius = float(np.hypot(*(entity_polygon(target) - [x, y]).T).max())  # large tables stand farther off
-        return dist <= self.view_distance_m + radius and abs(math.atan2(local[1], local[0])) < HALF_FOV_RAD * 0.8
+        return (dist <= self.view_distance_m + radius and abs(math.atan2(local[1], local[0])) < HALF_FOV_RAD * 0.8
+                and self._clear_sight(target, pose.x, pose.y))
+
+    def _clear_sight(self, target: Entity, x: float, y: float, step_m: float = 0.05) -> bool:
+        """Whether the straight line from ``(x, y)`` to ``target``'s centre crosses no other
+        perceived furniture before it reaches the target's own cells: an arm of the couch
+        between the robot and a low table hides what lies on the table."""
+        tx, ty = entity_centre(target)
+        length = math.hypot(tx - x, ty - y)
+        if length < step_m:
+            return True
+        t = np.arange(step_m, length, step_m) / length
+        line = np.column_stack([x + t * (tx - x), y + t * (ty - y)])
+        own = target.points_m()
+        if len(own):  # the part of the line over the target itself does not count
+            from scipy.spatial import cKDTree
+
+            d, _ = cKDTree(own).query(line, k=1)
+            line = line[d > target.grid.resolution_m]
+        if len(line) == 0:
+            return True
+        for other in self.perception.furniture():
+            if other.id == target.id:
+                continue
+            cells = other.points_m()
+            if len(cells) == 0:
+                continue
+            lo, hi = cells.min(axis=0) - 0.1, cells.max(axis=0) + 0.1
+            near = line[np.all((line >= lo) & (line <= hi), axis=1)]
+            if len(near) == 0:
+                continue
+            from scipy.spatial import cKDTree
+
+            d, _ = cKDTree(cells).query(near, k=1)
+            if np.any(d <= other.grid.resolution_m * 0.75):  # inside a cell (half its diagonal is 0.71)
+                return False
+        return True
 
     def _face(self, target: Entity) -> ExecutionResult:
         """Drive to a viewing pose of ``target`` (if not already there) and turn to it."""
@@ -789,9 +863,14 @@ class FetchTask:
         cx, cy = entity_centre(target)
         if not self._in_view(target):
             last = None
-            for goal in self._viewing_poses(target, pose)[:4]:
+            for goal in self._viewing_poses(target, self._pose())[:4]:
                 last = self._step(self.navigator.go_to(self._robot, goal[:2], goal[2]))
-                if last.success or last.status is ExecutionStatus.COLLISION and last.details.get("bumped"):
+                if last.success:
+                    break
+                if not self._recover_from_bump(last):
+                    break
+                if self._in_view(target):  # backed off with the target in view: close enough
+                    last = ExecutionResult.ok("backed off after a bump, the target in view", final_pose=self._pose())
                     break
             if last is not None and not last.success:
                 return last
@@ -801,9 +880,19 @@ class FetchTask:
         self._observe_here()
         return turned
 
+    def _recover_from_bump(self, result: ExecutionResult) -> bool:
+        """After a bump (``result`` a collision with ``bumped``): back off a little and say
+        True so the caller tries another way; False for any other result, or when backing
+        off bumped too (boxed in: the collision stands)."""
+        if result.status is not ExecutionStatus.COLLISION or not result.details.get("bumped"):
+            return False
+        backed = self._step(self.navigator.follower.back_off(self._robot, localizer=self.localizer))
+        self._observe_here()  # what it touched may now be in view
+        return backed.success
+
     def _viewing_poses(self, target: Entity, pose: Pose2D) -> list[tuple[float, float, float]]:
         """Free poses ``standoff_m`` off the furniture's edge, facing its centre, nearest the
-        robot first."""
+        robot first; poses from which other furniture hides the target come last."""
         cx, cy = entity_centre(target)
         poly = entity_polygon(target)
         occ = self.obstacles.occupancy()
@@ -821,6 +910,8 @@ class FetchTask:
                     continue
                 here = self.world.floorplan.room_at(x, y)
                 penalty = 0.0 if here is not None and here.name == room else 3.0
+                if not self._clear_sight(target, x, y):  # other furniture in the way: a last resort
+                    penalty += 2.0
                 cost = math.hypot(x - pose.x, y - pose.y) + penalty + extra
                 out.append((cost, (x, y, math.atan2(cy - y, cx - x))))
                 break

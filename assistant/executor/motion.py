@@ -197,6 +197,34 @@ class PathFollower:
         return self._result(ExecutionStatus.TIMEOUT, f"could not turn to {heading_rad:.2f} rad", robot,
                             start_time, 0.0, localizer)
 
+    def back_off(self, robot: DrivableRobot, distance_m: float = 0.25, speed_m_s: float = 0.15,
+                 localizer: Localizer | None = None) -> ExecutionResult:
+        """Reverse straight for ``distance_m`` (metres) at ``speed_m_s``: what a robot does after
+        its bumper touched something, before it tries another way. Stops early on a second
+        bump (something behind) and reports it as ``collision``."""
+        if distance_m <= 0 or speed_m_s <= 0:
+            raise ValueError(f"distance and speed must be positive, got {distance_m} m at {speed_m_s} m/s")
+        clock = _Clock(robot, self.control_period_s)
+        odo = robot.odometry()
+        start_time, start_xy = odo.timestamp_s, odo.pose.xy
+        budget = distance_m / speed_m_s + self.time_slack_s
+        for _ in range(int(math.ceil(budget / self.control_period_s)) * 2 + 10):
+            odo = robot.odometry()
+            if float(np.linalg.norm(odo.pose.xy - start_xy)) >= distance_m:
+                break
+            if odo.timestamp_s - start_time > budget:
+                break
+            robot.send_velocity(-speed_m_s, 0.0)
+            clock.tick()
+            if _bumped(robot):
+                robot.stop()
+                return self._result(ExecutionStatus.COLLISION, "bumped into something while backing off",
+                                    robot, start_time, 0.0, localizer, bumped=True)
+        robot.stop()
+        travelled = float(np.linalg.norm(robot.odometry().pose.xy - start_xy))
+        return self._result(ExecutionStatus.SUCCESS, f"backed off {travelled:.2f} m", robot, start_time,
+                            travelled, localizer)
+
     def face_point(self, robot: DrivableRobot, x: float, y: float,
                    localizer: Localizer | None = None) -> ExecutionResult:
         """Turn on the spot to face the point ``(x, y)`` (metres)."""

@@ -13,7 +13,9 @@ from assistant.robot.frames import Odometry
 
 class KinematicRobot:
     """Unicycle kinematics integrated in simulated time; stops with ``bumped`` set when its
-    disc would overlap an obstacle of a boolean occupancy (True = blocked)."""
+    disc would move into an obstacle of a boolean occupancy (True = blocked). Like the
+    simulator's base, a new velocity command clears ``bumped``, and moving away from what it
+    touched is allowed."""
 
     def __init__(self, pose: Pose2D, grid=None, occupied=None, radius_m: float = 0.25):
         self.pose = pose
@@ -34,6 +36,7 @@ class KinematicRobot:
     def send_velocity(self, linear_m_s: float, angular_rad_s: float) -> None:
         self.commands_sent += 1
         self.command = (float(linear_m_s), float(angular_rad_s))
+        self.bumped = False
 
     def stop(self) -> None:
         self.command = (0.0, 0.0)
@@ -47,12 +50,20 @@ class KinematicRobot:
                 v = 0.0
             p = self.pose
             nxt = Pose2D(p.x + v * math.cos(p.theta) * dt, p.y + v * math.sin(p.theta) * dt, p.theta + w * dt)
-            if self._collides(nxt):
+            if self._collides(nxt) and self._clearance_at(nxt) <= self._clearance_at(p):
                 self.bumped = True
                 self.command = (0.0, 0.0)
             else:
                 self.pose = nxt
             self.time_s += dt
+
+    def _clearance_at(self, pose: Pose2D) -> float:
+        if self.occupied is None:
+            return math.inf
+        iy, ix = self.grid.world_to_cell(pose.xy)[0]
+        if not (0 <= iy < self.grid.height_cells and 0 <= ix < self.grid.width_cells):
+            return -math.inf
+        return float(self._clearance[iy, ix])
 
     def _collides(self, pose: Pose2D) -> bool:
         if self.occupied is None:

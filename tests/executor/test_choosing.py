@@ -55,3 +55,26 @@ def test_a_large_room_seen_from_its_door_is_surveyed(studio, all_worlds):
     bedroom = FetchTask(all_worlds["one-bedroom-house"], OracleFurniture(all_worlds["one-bedroom-house"], "original"))
     bedroom._looked_from = [Pose2D(3.1, 5.7, math.pi / 2)]
     assert bedroom._unseen(bedroom._room_points("bedroom")).mean() <= bedroom.max_unseen_share
+
+
+def test_the_back_wall_is_the_far_wall_as_one_enters(all_worlds):
+    # the apartment's living room seen from its door (south side, looking north): the dinner
+    # table stands near the far (north) wall, the round table near the door's own wall
+    world = all_worlds["apartment"]
+    task = FetchTask(world, OracleFurniture(world, "original"))
+    task._support, task._descriptors = None, ()
+    door = Pose2D(4.5, 1.8, math.pi / 2)
+    _, target, _ = task._choose_pair(RDT("wall", "back", "table"), "living room", door)
+    assert target.id == "dinnertable_1"
+
+
+def test_other_furniture_on_the_line_of_sight_hides_the_target(all_worlds):
+    world = all_worlds["apartment"]
+    task = FetchTask(world, OracleFurniture(world, "original"))
+    table = next(e for e in task._in_room("living room", "table") if e.id == "roundtable_1")  # (4.0, 2.0)
+    # from the couch's far side (couch_1 spans x 3.47–5.53 at y ≈ 3), the couch is in the way
+    assert not task._clear_sight(table, 4.0, 3.9)
+    # from the south-west, over open floor, nothing is
+    assert task._clear_sight(table, 2.8, 1.6)
+    assert not task._in_view(table, Pose2D(4.0, 3.9, -math.pi / 2))
+    assert task._in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2)))

@@ -134,3 +134,27 @@ def test_room_entry_on_the_training_home(any_robot):
         assert result.success, result.message
     pose = robot.odometry().pose
     assert world.floorplan.room("bedroom").contains(pose.x, pose.y)
+
+
+def test_backing_off_after_a_bump_frees_the_robot(apartment, any_robot):
+    robot = any_robot(apartment)
+    follower = PathFollower()
+    bumped = follower.follow(robot, np.array([[5.0, 0.0], [5.0, 3.0]]))  # into the hallway's north wall
+    assert bumped.status is ExecutionStatus.COLLISION
+    at_wall = robot.odometry().pose
+    backed = follower.back_off(robot, distance_m=0.25)
+    assert backed.status is ExecutionStatus.SUCCESS, backed.message
+    pose = robot.odometry().pose
+    assert 0.2 < math.dist(pose.xy, at_wall.xy) < 0.35  # reversed about the distance asked
+    assert pose.y < at_wall.y  # away from the wall, heading unchanged
+    assert abs(angle_difference(pose.theta, at_wall.theta)) < 0.05
+    # and it can drive again: a path away from the wall is followed
+    away = follower.follow(robot, np.array([pose.xy, [pose.x, pose.y - 0.5]]))
+    assert away.status is ExecutionStatus.SUCCESS, away.message
+
+
+def test_back_off_rejects_a_distance_that_is_not_positive(apartment, any_robot):
+    import pytest
+
+    with pytest.raises(ValueError, match="positive"):
+        PathFollower().back_off(any_robot(apartment), distance_m=0.0)
