@@ -26,8 +26,9 @@ def register(subparsers) -> None:
     parser.add_argument("--world", help="world name (apartment, hk-studio, …) or a world file path")
     parser.add_argument("--scene", default="original", help="scene: original or modified")
     parser.add_argument("--listener", type=parse_pose, metavar="X,Y,HEADING",
-                        help="where the person asking stands (metres, metres, radians); the room "
-                             "is not said when they are in it")
+                        help="where the person asking stands (metres, metres, radians; default: "
+                             "the world's start pose, where the robot was asked); the room is not "
+                             "said when they are in it, walls are named as they walk in")
     parser.add_argument("--style", choices=("static", "dynamic"), default=None,
                         help="static: where it is; dynamic: how to get there from --listener "
                              "(default: from --question, else static)")
@@ -118,11 +119,11 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
         raise UnknownNameError("search", str(search), ("sensed", "oracle"))
     world = load_world(world_name)
     scene = world.scene(scene).name
-    pose = Pose2D(*listener) if listener is not None else None
+    # the person asking stands where the robot was asked (the world's start pose) unless told
+    # otherwise: rooms are entered, and walls named ("the back wall"), from there
+    pose = Pose2D(*listener) if listener is not None else world.start
     if style is None:
         style = style_for_question(question) if question else "static"
-    if style == "dynamic" and pose is None:
-        pose = world.start
     if search == "sensed":
         from assistant.generation import search_for
 

@@ -303,7 +303,7 @@ class DialogueManager:
             sighting = oracle_sighting(self.world, self.scene, obj)
         if sighting is None:
             return not_found_description(obj, self.rooms)
-        listener = self.world.start if style == "dynamic" else None
+        listener = self.world.start  # the person talks to the robot where it started
         from assistant.dialogue.services import _env
 
         return self.services.describer.describe(sighting, _env(self.world, self.scene), self.world.floorplan,
@@ -629,7 +629,7 @@ class DialogueManager:
         data = {"object": name, "found": bool(result.found), "status": result.status,
                 "rooms_searched": list(result.rooms_searched), "seen": summary["seen"], "source": "search",
                 "search_seconds": round(float(getattr(result, "wall_seconds", 0.0) or 0.0), 2)}
-        listener = self.world.start if style == "dynamic" else None
+        listener = self.world.start  # the person talks to the robot where it started
         try:
             answer = self.services.describer.describe_search(result, self.world.floorplan, listener_pose=listener,
                                                              style=style)

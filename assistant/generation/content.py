@@ -103,13 +103,14 @@ def support_of(sighting, furniture: list) -> object | None:
 
 
 def entry_heading(floorplan, room: str, listener_pose=None) -> float | None:
-    """The heading (radians) of a person entering ``room``: through the door on the way from
-    the listener (if given and elsewhere), else the room's first door; the listener's own
-    heading when they are already inside; None when it cannot be told."""
+    """The heading (radians) of a person entering ``room``: through the door (or open-plan
+    opening, :attr:`~assistant.world.Floorplan.openings`) on the way from the listener (if
+    given and elsewhere), else the room's first door; the listener's own heading when they
+    are already inside; None when it cannot be told."""
     r = floorplan.room(room)
     if listener_pose is not None and r.contains(listener_pose.x, listener_pose.y):
         return float(listener_pose.theta)
-    doors = floorplan.doors_of(room)
+    doors = floorplan.passages_of(room)  # doors, and open-plan openings: how a person walks in
     if listener_pose is not None and doors:
         from assistant.generation.route import room_path
 

@@ -23,10 +23,10 @@ STRAIGHT_RAD = math.radians(30)
 
 
 def room_graph(floorplan) -> nx.Graph:
-    """Rooms connected by doors."""
+    """Rooms connected by doors and by open-plan openings (a person walks through both)."""
     g = nx.Graph()
     g.add_nodes_from(floorplan.room_names)
-    for door in floorplan.doors:
+    for door in tuple(floorplan.doors) + tuple(floorplan.openings):
         a, b = door.connects
         if a in g and b in g:
             g.add_edge(a, b, door=door.name)
@@ -59,8 +59,8 @@ def route_nodes(floorplan, listener_pose, support, room: str) -> list[ContentNod
         heading = entry_heading(floorplan, room, listener_pose)
         path = room_path(floorplan, listener_pose, room) or [room]
         prev = path[-2] if len(path) >= 2 else None
-        doors = [d for d in floorplan.doors_of(room) if prev is None or prev in d.connects] or \
-            floorplan.doors_of(room)
+        doors = [d for d in floorplan.passages_of(room) if prev is None or prev in d.connects] or \
+            floorplan.passages_of(room)
         if heading is None or not doors:
             return nodes
         origin = np.array(doors[0].centre)

@@ -8,6 +8,7 @@ evaluation scores against, never read by the executor.
 
 from __future__ import annotations
 
+from functools import cached_property
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -66,6 +67,59 @@ class Door:
     connects: tuple[str, str]
 
 
+#: rooms whose bounding boxes lie this close (metres) share a side
+SHARED_SIDE_GAP_M = 0.12
+#: a free stretch of a shared side narrower than this (metres) is no passage
+MIN_OPENING_M = 0.6
+
+
+def _free_intervals(lo: float, hi: float, blocked: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """``[lo, hi]`` without the ``blocked`` intervals."""
+    out, start = [], lo
+    for b0, b1 in sorted(blocked):
+        if b1 <= start:
+            continue
+        if b0 > start:
+            out.append((start, min(b0, hi)))
+        start = max(start, b1)
+        if start >= hi:
+            break
+    if start < hi:
+        out.append((start, hi))
+    return [(u, v) for u, v in out if v > u]
+
+
+def _shared_free_side(a: Room, b: Room, walls) -> tuple[tuple[float, float], float] | None:
+    """(centre, width) of the longest stretch of the side rooms ``a`` and ``b`` share (their
+    bounding boxes touch) that no wall block covers, or None."""
+    pa, pb = a.polygon_array, b.polygon_array
+    (ax0, ay0), (ax1, ay1) = pa.min(axis=0), pa.max(axis=0)
+    (bx0, by0), (bx1, by1) = pb.min(axis=0), pb.max(axis=0)
+    best = None
+    for axis in (0, 1):  # 0: a side along y at some x; 1: a side along x at some y
+        (a0, a1), (b0, b1) = ((ax0, ax1), (bx0, bx1)) if axis == 0 else ((ay0, ay1), (by0, by1))
+        (c0, c1), (d0, d1) = ((ay0, ay1), (by0, by1)) if axis == 0 else ((ax0, ax1), (bx0, bx1))
+        for edge_a, edge_b in ((a1, b0), (b1, a0)):
+            if abs(edge_a - edge_b) > SHARED_SIDE_GAP_M:
+                continue
+            at = (edge_a + edge_b) / 2
+            lo, hi = max(c0, d0), min(c1, d1)
+            if hi - lo < MIN_OPENING_M:
+                continue
+            band = SHARED_SIDE_GAP_M
+            blocked = []
+            for w in walls:
+                w_at0, w_at1 = (w.xmin, w.xmax) if axis == 0 else (w.ymin, w.ymax)
+                if w_at1 < at - band or w_at0 > at + band:
+                    continue
+                blocked.append((w.ymin, w.ymax) if axis == 0 else (w.xmin, w.xmax))
+            for u, v in _free_intervals(lo, hi, blocked):
+                if v - u >= MIN_OPENING_M and (best is None or v - u > best[1]):
+                    mid = (u + v) / 2
+                    best = (((float(at), float(mid)) if axis == 0 else (float(mid), float(at))), float(v - u))
+    return best
+
+
 @dataclass(frozen=True)
 class Floorplan:
     rooms: tuple[Room, ...]
@@ -91,6 +145,31 @@ class Floorplan:
 
     def doors_of(self, room_name: str) -> list[Door]:
         return [d for d in self.doors if room_name in d.connects]
+
+    @cached_property
+    def openings(self) -> tuple[Door, ...]:
+        """Open-plan passages: where an ``open`` room meets a neighbour along a shared side
+        that no wall covers (the living room that runs into the meeting room), one
+        :class:`Door` per pair of rooms, named ``opening <a>/<b>``, at the middle of the
+        longest free stretch of the shared side with that stretch's length as its width.
+        Rooms a door joins get no opening (the free stretch there is the doorway).
+        Doors are doorways with frames; openings are how people walk between open rooms."""
+        out = []
+        rooms = self.rooms
+        by_door = {frozenset(d.connects) for d in self.doors}
+        for i, a in enumerate(rooms):
+            for b in rooms[i + 1:]:
+                if not (a.open or b.open) or frozenset((a.name, b.name)) in by_door:
+                    continue  # closed rooms, or rooms a doorway joins
+                passage = _shared_free_side(a, b, self.walls)
+                if passage is not None:
+                    centre, width = passage
+                    out.append(Door(f"opening {a.name}/{b.name}", centre, width, (a.name, b.name)))
+        return tuple(out)
+
+    def passages_of(self, room_name: str) -> list[Door]:
+        """The ways into a room: its doors, then its open-plan :attr:`openings`."""
+        return self.doors_of(room_name) + [d for d in self.openings if room_name in d.connects]
 
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of rooms and walls, metres."""

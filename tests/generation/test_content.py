@@ -121,3 +121,16 @@ def test_the_uniqueness_term_prefers_selections_that_rule_out_look_alikes(genera
     assert ambiguous  # nothing rules out b
     assert any(n.key == "wall-left" for n in chosen)
     assert np.isfinite(_)
+
+
+def test_an_open_plan_room_is_entered_the_way_the_listener_walks_in(all_worlds):
+    import math
+
+    from assistant.generation.content import entry_heading
+
+    world = all_worlds["two-bedrooms-house"]
+    # from the start (the hallway, north) the way into the living room is through the meeting
+    # room: walking south, so its back wall is the south one
+    assert entry_heading(world.floorplan, "living room", world.start) == pytest.approx(-math.pi / 2)
+    # with nobody placed, the room's own door (from the inner hall, east) is the way in
+    assert entry_heading(world.floorplan, "living room") == pytest.approx(math.pi)
