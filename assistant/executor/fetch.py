@@ -293,7 +293,7 @@ class FetchTask:
         if toward is None:
             occ = self.obstacles.occupancy()
             spots = self._room_points(room, 0.5)
-            spots = spots[(occ.clearance_at(spots) >= 0.4) & self._reachable(occ, self._pose(), spots)]
+            spots = spots[(occ.clearance_at(spots) >= 0.4) & occ.reachable_from(self._pose(), spots)]
             if len(spots) == 0:
                 return False
             rest = pts[unseen]
@@ -423,7 +423,7 @@ class FetchTask:
                     lo = hi = poly.mean(axis=0)
                 xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1e-9, 0.1), np.arange(lo[1], hi[1] + 1e-9, 0.1))
                 pts = np.column_stack([xs.ravel(), ys.ravel()])
-                keep = (occ.clearance_at(pts) >= clearance) & self._reachable(occ, pose, pts)
+                keep = (occ.clearance_at(pts) >= clearance) & occ.reachable_from(pose, pts)
                 for t in tried:  # not again near a spot that failed
                     keep &= np.hypot(pts[:, 0] - t[0], pts[:, 1] - t[1]) > 0.5
                 pts = pts[keep]
@@ -446,23 +446,6 @@ class FetchTask:
             result = ExecutionResult.failed(ExecutionStatus.NO_PATH, f"no way into the {room} was found",
                                             final_pose=self._pose())
         return result
-
-    @staticmethod
-    def _reachable(occ, pose: Pose2D, pts: np.ndarray) -> np.ndarray:
-        """Which points lie in the free region the robot stands in (pockets behind furniture
-        are left out)."""
-        labels = occ.free_regions
-        here = occ.cells_of(np.array([[pose.x, pose.y]]))[0]
-        cells = occ.cells_of(pts)
-        inside = occ.grid.contains_cells(cells)
-        if not occ.grid.contains_cells(here[None])[0]:
-            return inside
-        mine = labels[here[0], here[1]]
-        if mine == 0:  # the robot stands in a blocked cell (after a bump): do not filter
-            return inside
-        out = np.zeros(len(pts), dtype=bool)
-        out[inside] = labels[cells[inside, 0], cells[inside, 1]] == mine
-        return out
 
     # ------------------------------------------------------------------ nodes
     def _run_node(self, node, room: str):
@@ -803,7 +786,7 @@ class FetchTask:
             lo, hi = r.polygon_array.min(axis=0) + 0.4, r.polygon_array.max(axis=0) - 0.4
             xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1e-9, 0.2), np.arange(lo[1], hi[1] + 1e-9, 0.2))
             pts = np.column_stack([xs.ravel(), ys.ravel()])
-            pts = pts[(occ.clearance_at(pts) >= 0.4) & self._reachable(occ, self._pose(), pts)]
+            pts = pts[(occ.clearance_at(pts) >= 0.4) & occ.reachable_from(self._pose(), pts)]
             if len(pts):
                 cx, cy = pts[int(np.argmin(np.hypot(pts[:, 0] - toward[0], pts[:, 1] - toward[1])))]
         moved = self._step(self.navigator.go_to(self._robot, (float(cx), float(cy))))
@@ -906,7 +889,7 @@ class FetchTask:
                 r = extent + self.standoff_m + extra
                 x, y = cx + r * u[0], cy + r * u[1]
                 if not occ.is_free(x, y) or float(occ.clearance_at(np.array([[x, y]]))[0]) < 0.35 \
-                        or not self._reachable(occ, pose, np.array([[x, y]]))[0]:
+                        or not occ.reachable_from(pose, np.array([[x, y]]))[0]:
                     continue
                 here = self.world.floorplan.room_at(x, y)
                 penalty = 0.0 if here is not None and here.name == room else 3.0

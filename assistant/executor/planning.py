@@ -102,6 +102,26 @@ class OccupancyMap:
     def cells_of(self, points_xy: np.ndarray) -> np.ndarray:
         return self.grid.world_to_cell(np.asarray(points_xy, dtype=float).reshape(-1, 2))
 
+    def reachable_from(self, pose, points_xy: np.ndarray) -> np.ndarray:
+        """Which world points (N, 2) lie in the free region the robot at ``pose`` stands in
+        (pockets behind furniture are left out). Off the grid: False; when the robot itself is
+        off the grid or on a blocked cell (after a bump), every point on the grid counts."""
+        pts = np.asarray(points_xy, dtype=float).reshape(-1, 2)
+        if len(pts) == 0:
+            return np.zeros(0, dtype=bool)
+        labels = self.free_regions
+        here = self.cells_of(np.array([[pose.x, pose.y]]))[0]
+        cells = self.cells_of(pts)
+        inside = self.grid.contains_cells(cells)
+        if not self.grid.contains_cells(here[None])[0]:
+            return inside
+        mine = labels[here[0], here[1]]
+        if mine == 0:
+            return inside
+        out = np.zeros(len(pts), dtype=bool)
+        out[inside] = labels[cells[inside, 0], cells[inside, 1]] == mine
+        return out
+
     def clearance_at(self, points_xy: np.ndarray) -> np.ndarray:
         """Clearance (metres) at world points; 0 outside the grid."""
         cells = self.cells_of(points_xy)

@@ -331,7 +331,7 @@ class ObjectSearch:
         if len(cand) == 0:
             return None
         cand = cand[occ.clearance_at(cand) >= self.clearance_m]
-        reachable = _reachable(occ, self._pose(), cand)
+        reachable = occ.reachable_from(self._pose(), cand)
         if reachable.any():  # (none: the robot stands in a gap the map closes; let the planner try)
             cand = cand[reachable]
         for tried in self._failed:
@@ -378,7 +378,7 @@ class ObjectSearch:
         xs, ys = np.meshgrid(np.arange(lo[0] + 0.2, hi[0], 0.2), np.arange(lo[1] + 0.2, hi[1], 0.2))
         pts = np.column_stack([xs.ravel(), ys.ravel()])
         pts = pts[point_in_polygon(pts, poly)]
-        pts = pts[(occ.clearance_at(pts) >= self.clearance_m) & _reachable(occ, self._pose(), pts)]
+        pts = pts[(occ.clearance_at(pts) >= self.clearance_m) & occ.reachable_from(self._pose(), pts)]
         pose = self._pose()
         for _ in range(3):
             if len(pts) == 0:
@@ -517,7 +517,7 @@ class ObjectSearch:
             for a in angles:
                 x, y = hit.x_m + r * math.cos(a), hit.y_m + r * math.sin(a)
                 pt = np.array([[x, y]])
-                if occ.clearance_at(pt)[0] < self.clearance_m or not _reachable(occ, here, pt)[0]:
+                if occ.clearance_at(pt)[0] < self.clearance_m or not occ.reachable_from(here, pt)[0]:
                     continue
                 cost = math.hypot(x - here.x, y - here.y) + abs(r - 1.5)
                 if best is None or cost < best[0]:
@@ -557,24 +557,6 @@ class ObjectSearch:
             vantages=list(self._vantages), path_m=self._dist, sim_seconds=self._spent(),
             wall_seconds=time.perf_counter() - self._wall0, frames=self._frames, seen=dict(self._seen),
             found_at_wall_s=found_wall)
-
-
-def _reachable(occ, pose, pts: np.ndarray) -> np.ndarray:
-    """Which points lie in the free region the robot stands in."""
-    if len(pts) == 0:
-        return np.zeros(0, dtype=bool)
-    labels = occ.free_regions
-    here = occ.cells_of(np.array([[pose.x, pose.y]]))[0]
-    cells = occ.cells_of(pts)
-    inside = occ.grid.contains_cells(cells)
-    if not occ.grid.contains_cells(here[None])[0]:
-        return inside
-    mine = labels[here[0], here[1]]
-    if mine == 0:
-        return inside
-    out = np.zeros(len(pts), dtype=bool)
-    out[inside] = labels[cells[inside, 0], cells[inside, 1]] == mine
-    return out
 
 
 def search_for(name: str, world, scene: str = "original", *, detector=None, furniture_detector=None,

@@ -159,3 +159,17 @@ def test_cost_is_lower_in_open_floor(apartment):
     open_floor, near_wall = occ.cells_of(np.array([[4.5, 4.5], [4.5, 7.45]]))
     assert cost[tuple(open_floor)] == pytest.approx(1.0)
     assert 1.0 < cost[tuple(near_wall)] < np.inf
+
+
+def test_reachable_from_leaves_out_pockets_the_robot_cannot_drive_into():
+    from assistant.executor.planning import OccupancyMap
+    from assistant.geometry import GridMap, Pose2D
+
+    grid = GridMap(0.1, 0.0, 0.0, 40, 40)  # 4 m × 4 m
+    obstacles = np.zeros(grid.shape, dtype=bool)
+    obstacles[:, 20] = True  # a wall across the middle: x = 2.0–2.1 m
+    occ = OccupancyMap.from_obstacles(grid, obstacles)
+    pts = np.array([[1.0, 2.0], [3.0, 2.0], [9.0, 9.0]])
+    assert occ.reachable_from(Pose2D(0.5, 2.0, 0.0), pts).tolist() == [True, False, False]
+    assert occ.reachable_from(Pose2D(3.5, 2.0, 0.0), pts).tolist() == [False, True, False]
+    assert occ.reachable_from(Pose2D(0.5, 2.0, 0.0), np.zeros((0, 2))).shape == (0,)
