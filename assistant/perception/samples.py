@@ -13,7 +13,12 @@ tall to be furniture, and clearing it keeps a couch or bed standing against a wa
 the wall (the dissertation drops whole components taller than 2 m, which loses them); so is
 every cell higher than ``wall_remains_top_m`` within two cells of a cleared one (a wall's remains
 beside its cleared columns: noise spreads a wall over two cells, and its part under the top
-rows of the image is not cleared otherwise). Each sample is voxel-downsampled (open3d).
+rows of the image is not cleared otherwise). With the image rows and columns, the wall is also followed down
+each image column from those points for as long as it stays a vertical surface
+(:func:`wall_continuation`): a wall leaning a degree or two against the floor found (real
+frames) or seen obliquely drops its lower part into the cells in front of the cleared ones,
+below the remains height, where it stood on the couch or bed before it like a headboard.
+Each sample is voxel-downsampled (open3d).
 """
 
 from __future__ import annotations
@@ -40,6 +45,7 @@ class SampleParams:
     wall_thickness_m: float = 0.08  # a thin, long, tall-ish component is a piece of wall
     wall_length_m: float = 1.2
     wall_remains_top_m: float | None = 1.2  # None: clear only the tall columns themselves
+    wall_trace_band_m: float | None = 0.025  # None: do not follow walls down the image columns
 
 
 @dataclass(eq=False)
@@ -95,12 +101,15 @@ def sample_region(x: np.ndarray, y: np.ndarray, z: np.ndarray,
 def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
                     image_height: int | None = None, cols: np.ndarray | None = None,
                     image_width: int | None = None,
-                    params: SampleParams = SampleParams()) -> tuple[list[FurnitureSample], dict]:
+                    params: SampleParams = SampleParams(),
+                    camera_xy=None) -> tuple[list[FurnitureSample], dict]:
     """Split a floor-frame cloud into furniture samples.
 
     ``rows``/``cols`` give each point's image row/column (or None) to clear columns that run
-    out of the top of the view and to flag samples cut by the image sides. Returns the samples
-    and counts of what was dropped and why.
+    out of the top of the view and to flag samples cut by the image sides; with them and
+    ``camera_xy`` (the camera's floor-frame position) a wall is also followed down its image
+    columns (:func:`wall_continuation`). Returns the samples and counts of what was dropped and
+    why.
     """
     import open3d as o3d
     from scipy import ndimage
@@ -134,6 +143,19 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
         if p.wall_remains_top_m is not None:
             cleared = _with_wall_remains(cleared, occupied, flat, pts[:, 2], (ny, nx),
                                          p.wall_remains_top_m)
+        if (p.wall_trace_band_m is not None and r is not None and c is not None
+                and camera_xy is not None):
+            # the wall: the clear points and, in cleared cells, what is above furniture height
+            top = p.wall_remains_top_m if p.wall_remains_top_m is not None else p.max_height_m
+            wall = wall_continuation(pts, r, c, clear | (cleared[flat] & (pts[:, 2] > top)),
+                                     camera_xy, p.wall_trace_band_m)
+            stats["wall_points"] = int(np.count_nonzero(wall))
+            if stats["wall_points"]:
+                keep = ~wall
+                pts, r, c = np.compress(keep, pts, axis=0), r[keep], c[keep]
+                flat = flat[keep]
+                occupied = np.zeros(nx * ny, dtype=bool)
+                occupied[flat] = True
         stats["cleared_cells"] = int(np.count_nonzero(cleared))
         occupied[cleared] = False
     grid = occupied.reshape(ny, nx)
@@ -179,6 +201,62 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
         samples.append(FurnitureSample(down, cells_xy, height, touches,
                                        info={"raw_points": int(len(sp)), "cells": int(len(cells))}))
     return samples, stats
+
+
+def wall_continuation(points: np.ndarray, rows: np.ndarray, cols: np.ndarray, wall: np.ndarray,
+                      camera_xy, band_m: float = 0.025, steep: float = 0.5, reach: int = 3
+                      ) -> np.ndarray:
+    """Mask of the points that continue a wall (``wall``: points known to be on one) down its
+    image columns; the ``wall`` points themselves are not in it.
+
+    A wall is vertical, so at one image column its lower part stands at the same horizontal
+    range from the camera as its upper part. Each column is read downwards over its readings;
+    a step from a wall reading to one at most ``reach`` readings further down (so a noisy
+    reading, a missing stretch or a picture on the wall is passed) stays on the wall when the
+    lower reading is lower and either farther (back on the wall below something hanging on
+    it) or nearer by less than ``band_m`` — half a floor cell, which the grid cannot tell from
+    the wall — while dropping by more than ``steep`` times that (a surface steeper than ~63°).
+    What stands in front of the wall (a backrest's, headboard's or table's top) is a step
+    nearer than that, the floor and other horizontal surfaces a step that does not drop:
+    there the wall ends.
+
+    Measured on the Kinect v2 living-room frame (``docs/perception.md``): with the floor found
+    from the frame, its walls lean ~2° and their lower parts (0.7–1.15 m) fell into the cells
+    next to the cleared ones, below the 1.2 m of the remains rule, and stood like a headboard
+    along the back of the L-shaped couch. Computed on the column-sorted readings as runs:
+    a run is a stretch of readings with every gap between neighbours spanned by an accepted
+    step; a reading is wall when it has an accepted step and its run holds a ``wall`` point.
+    """
+    out = np.zeros(len(points), dtype=bool)
+    if len(points) < 2 or not wall.any():
+        return out
+    col = np.rint(cols).astype(np.int64)
+    if np.all(rows[1:] >= rows[:-1]):  # image order (a frame's cloud): a stable sort by column
+        order = np.argsort(col, kind="stable")
+    else:
+        order = np.lexsort((rows, col))
+    n = len(order)
+    cs = col.take(order)
+    z = points[:, 2].take(order)
+    rng = np.hypot(points[:, 0] - camera_xy[0], points[:, 1] - camera_xy[1]).take(order)
+    spanned = np.zeros(n, dtype=bool)  # spanned[g]: an accepted step crosses the gap g-1 | g
+    linked = np.zeros(n, dtype=bool)
+    for k in range(1, reach + 1):
+        drop = z[:-k] - z[k:]
+        move = rng[k:] - rng[:-k]  # > 0: the lower reading is farther
+        # lower, not nearer by band_m or more, and dropping by more than steep × any nearing
+        # (a step to a farther reading always does: then any drop will do)
+        ok = (cs[:-k] == cs[k:]) & (move > -band_m) & (drop > 0) & (drop + steep * move > 0)
+        linked[:-k] |= ok
+        linked[k:] |= ok
+        for j in range(1, k + 1):  # the step from a to a + k crosses the gaps a+1 … a+k
+            spanned[j:n - k + j] |= ok
+    run = np.cumsum(~spanned)
+    known = wall.take(order)
+    on_wall = np.zeros(int(run[-1]) + 1, dtype=bool)
+    on_wall[run[known]] = True
+    out[order] = on_wall[run] & linked & ~known
+    return out
 
 
 def _with_wall_remains(cleared: np.ndarray, occupied: np.ndarray, flat: np.ndarray,

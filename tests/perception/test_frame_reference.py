@@ -83,7 +83,7 @@ def assert_same_analysis(new, old, ref):
 
 #: the old code had no clearing of a wall's remains beside its cleared columns (a change of
 #: what is computed, not of speed): compared without it
-AS_BEFORE = FrameParams(samples=SampleParams(wall_remains_top_m=None))
+AS_BEFORE = FrameParams(samples=SampleParams(wall_remains_top_m=None, wall_trace_band_m=None))
 
 
 def test_fast_front_half_matches_the_old_code_on_simulated_frames(sim_frames, ref):
