@@ -46,6 +46,11 @@ class SampleParams:
     wall_length_m: float = 1.2
     wall_remains_top_m: float | None = 1.2  # None: clear only the tall columns themselves
     wall_trace_band_m: float | None = 0.025  # None: do not follow walls down the image columns
+    split_min_area_m2: float | None = 1.0  # None: never split a component into two items
+    split_max_fill: float = 0.7  # split only components filling less of their best rectangle
+    split_min_part_fill: float = 0.75  # each part must fill this much of its own rectangle …
+    split_min_gain: float = 0.2  # … and this much more than the whole fills its rectangle
+    split_min_part_m2: float = 0.25
 
 
 @dataclass(eq=False)
@@ -160,6 +165,8 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
         occupied[cleared] = False
     grid = occupied.reshape(ny, nx)
     labels, count = ndimage.label(grid, structure=np.ones((3, 3), dtype=int))
+    if p.split_min_area_m2 is not None and count:
+        labels, count, stats["split"] = split_joined_items(labels, count, p)
     samples: list[FurnitureSample] = []
     if count == 0:
         return samples, stats
@@ -201,6 +208,127 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
         samples.append(FurnitureSample(down, cells_xy, height, touches,
                                        info={"raw_points": int(len(sp)), "cells": int(len(cells))}))
     return samples, stats
+
+
+#: cell size (metres) on which :func:`split_joined_items` judges a component's shape
+SHAPE_CELL_M = 0.1
+#: directions of the cuts :func:`split_joined_items` tries (radians)
+CUT_ANGLES = np.radians(np.arange(0.0, 180.0, 15.0))
+
+
+def _rect_fill(cells: np.ndarray) -> tuple[float, float, float]:
+    """(fill, long-axis angle, aspect) of the best-fitting rectangle of ``cells`` (K, 2, cell
+    units) over :data:`CUT_ANGLES`: the share of it they cover, the direction (radians, mod π)
+    of its longer side, and longer over shorter side."""
+    best = (0.0, 0.0, 1.0)
+    for angle in CUT_ANGLES:
+        u = cells @ np.array([np.cos(angle), np.sin(angle)])
+        v = cells @ np.array([-np.sin(angle), np.cos(angle)])
+        lu, lv = np.ptp(u) + 1.0, np.ptp(v) + 1.0
+        fill = len(cells) / (lu * lv)
+        if fill > best[0]:
+            best = (float(fill), float(angle if lu >= lv else angle + np.pi / 2) % np.pi,
+                    float(max(lu, lv) / min(lu, lv)))
+    return best
+
+
+def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_aspect: float = 1.8,
+              min_crossing: float = np.radians(45.0)) -> tuple[float, float, np.ndarray | None, float]:
+    """(whole, score, normal, offset): how well ``cells`` (K, 2, cell units) fill their
+    best-fitting rectangle (``whole``), and the straight cut — a line ``x · normal = offset`` —
+    after which both parts fill their own best rectangles best, ``score`` being the poorer
+    part's fill; parts smaller than ``min_cells`` are not allowed. All cuts of one direction
+    are scored at once, by the parts' rectangles aligned with the cut (running minima and
+    maxima along the sorted cells); the ``candidates`` best are scored again with each part's
+    own best rectangle (an arm of a V is not aligned with the cut along the other arm), and
+    only cuts into two long parts (``min_aspect``) whose long sides cross at ``min_crossing`` or
+    more count: two couches in an L, or a couch and a bench at its end, not a bed and its
+    headboard or a desk and its chair."""
+    n = len(cells)
+    pool = []
+    for angle in CUT_ANGLES:
+        normal = np.array([-np.sin(angle), np.cos(angle)])
+        tangent = np.array([np.cos(angle), np.sin(angle)])
+        along, across = cells @ normal, cells @ tangent
+        order = np.argsort(along, kind="stable")
+        al, ac = along[order], across[order]
+        # a cut after the i-th cell (only between distinct positions along the normal)
+        i = np.flatnonzero(np.diff(al) > 0.5) + 1
+        i = i[(i >= min_cells) & (n - i >= min_cells)]
+        if len(i) == 0:
+            continue
+        lo_a, hi_a = np.minimum.accumulate(ac), np.maximum.accumulate(ac)
+        lo_b, hi_b = np.minimum.accumulate(ac[::-1])[::-1], np.maximum.accumulate(ac[::-1])[::-1]
+        fill_a = i / ((al[i - 1] - al[0] + 1.0) * (hi_a[i - 1] - lo_a[i - 1] + 1.0))
+        fill_b = (n - i) / ((al[-1] - al[i] + 1.0) * (hi_b[i] - lo_b[i] + 1.0))
+        score = np.minimum(fill_a, fill_b)
+        for k in np.argsort(-score)[:3]:
+            pool.append((float(score[k]), normal, float((al[i[k] - 1] + al[i[k]]) / 2)))
+    whole = _rect_fill(cells)[0]
+    best = (-1.0, None, 0.0)
+    for _, normal, offset in sorted(pool, key=lambda c: -c[0])[:candidates]:
+        side = cells @ normal > offset
+        (fa, angle_a, aspect_a), (fb, angle_b, aspect_b) = _rect_fill(cells[side]), _rect_fill(cells[~side])
+        crossing = abs(((angle_a - angle_b) + np.pi / 2) % np.pi - np.pi / 2)
+        if min(aspect_a, aspect_b) < min_aspect or crossing < min_crossing:
+            continue  # not two long items at an angle (a bed cut at its headboard, a desk and its chair)
+        score = min(fa, fb)
+        if score > best[0]:
+            best = (score, normal, offset)
+    return whole, best[0], best[1], best[2]
+
+
+def split_joined_items(labels: np.ndarray, count: int, p: SampleParams = SampleParams()
+                       ) -> tuple[np.ndarray, int, int]:
+    """Split components that are two long items touching at an angle (an L of two couches, a
+    bench across a bed's foot) into two.
+
+    One piece of furniture covers a nearly rectangular patch of floor from any view; two
+    long pieces at an angle cover an L, a V or a T, which fills its best rectangle poorly. For a
+    component of at least ``split_min_area_m2`` that fills less than ``split_max_fill`` of
+    its best rectangle, every straight cut (:data:`CUT_ANGLES`, every 0.1 m across) is scored
+    by how well its two parts fill their own rectangles; the best is kept when both parts fill
+    at least ``split_min_part_fill`` and ``split_min_gain`` more than the whole, and both cover
+    ``split_min_part_m2``. Shapes are judged on 0.1 m cells (:data:`SHAPE_CELL_M`), the
+    component closed over one cell with its holes filled: far surfaces are read every few
+    cells (stripes), and the shape, not the sampling, decides. Returns the new labels, the new
+    label count and how many components were split."""
+    from scipy import ndimage
+
+    cell_area = p.grid_m ** 2
+    sizes = np.bincount(labels.reshape(-1), minlength=count + 1)
+    min_cells = p.split_min_part_m2 / SHAPE_CELL_M ** 2
+    split = 0
+    out = labels
+    for lab in np.flatnonzero(sizes * cell_area >= p.split_min_area_m2):
+        if lab == 0:
+            continue
+        own = np.argwhere(labels == lab)  # (iy, ix)
+        lo = own.min(axis=0)
+        k = max(1, int(round(SHAPE_CELL_M / p.grid_m)))
+        coarse = (own - lo) // k
+        box = np.zeros(tuple(coarse.max(axis=0) + 3), dtype=bool)
+        box[coarse[:, 0] + 1, coarse[:, 1] + 1] = True
+        box = ndimage.binary_fill_holes(ndimage.binary_closing(box, np.ones((3, 3), dtype=bool)))
+        cells = np.argwhere(box).astype(float)
+        whole, score, normal, offset = _best_cut(cells, min_cells)
+        if whole >= p.split_max_fill or normal is None:
+            continue
+        if score < max(p.split_min_part_fill, whole + p.split_min_gain):
+            continue
+        if out is labels:
+            out = labels.copy()
+        # the component's own cells on one side of the cut go to the new part
+        far = own[((own - lo) / k + 1) @ normal > offset]
+        mask = np.zeros(labels.shape, dtype=bool)
+        mask[far[:, 0], far[:, 1]] = True
+        # the cut-off part may fall apart along the cut: each of its pieces gets a label
+        pieces, n = ndimage.label(mask, structure=np.ones((3, 3), dtype=int))
+        for j in range(1, n + 1):
+            count += 1
+            out[pieces == j] = count
+        split += 1
+    return out, count, split
 
 
 def wall_continuation(points: np.ndarray, rows: np.ndarray, cols: np.ndarray, wall: np.ndarray,

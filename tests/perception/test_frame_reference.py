@@ -81,9 +81,11 @@ def assert_same_analysis(new, old, ref):
         assert (diff < 1e-9).mean() >= 0.99 and diff.max() < 0.15
 
 
-#: the old code had no clearing of a wall's remains beside its cleared columns (a change of
-#: what is computed, not of speed): compared without it
-AS_BEFORE = FrameParams(samples=SampleParams(wall_remains_top_m=None, wall_trace_band_m=None))
+#: the old code had no clearing of a wall's remains beside its cleared columns, no wall trace
+#: and no splitting of joined items (changes of what is computed, not of speed): compared
+#: without them
+AS_BEFORE = FrameParams(samples=SampleParams(wall_remains_top_m=None, wall_trace_band_m=None,
+                                             split_min_area_m2=None))
 
 
 def test_fast_front_half_matches_the_old_code_on_simulated_frames(sim_frames, ref):

@@ -236,3 +236,61 @@ def test_the_kinect_v2_living_rooms_wall_does_not_stand_on_its_couch(shared_dir)
 
     assert couch_top(FrameParams(samples=SampleParams(wall_trace_band_m=None))) > 0.9
     assert couch_top(FrameParams()) < 0.8
+
+
+def _l_of_two_couches(yaw_deg: float):
+    """Two 2.0 × 0.8 m couches meeting at a corner (an L), turned by ``yaw_deg`` about (2.5, 0)."""
+    a = box_points(2.5, -0.6, 0.8, 2.0, 0.0, 0.9)         # along y
+    b = box_points(2.9 + 0.6, 0.8, 2.0, 0.8, 0.0, 0.9)   # along x, touching a's end
+    pts = np.vstack([a, b])
+    t = math.radians(yaw_deg)
+    c, s = math.cos(t), math.sin(t)
+    xy = (pts[:, :2] - [2.5, 0.0]) @ np.array([[c, s], [-s, c]]) + [2.5, 0.0]
+    return np.column_stack([xy, pts[:, 2]])
+
+
+@pytest.mark.parametrize("yaw_deg", [0.0, 20.0, 45.0])
+def test_two_couches_touching_in_an_l_are_two_samples(yaw_deg):
+    samples, stats = extract_samples(_l_of_two_couches(yaw_deg))
+    assert stats["split"] == 1 and len(samples) == 2
+    areas = [len(s.cells_xy_m) * SampleParams().grid_m ** 2 for s in samples]
+    assert all(0.6 < a < 2.4 for a in areas)  # each most of one couch (1.6 m²; where the corner goes varies)
+    t = math.radians(yaw_deg)
+    rot = np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]])
+    truth = (np.array([[2.5, -0.6], [3.5, 0.8]]) - [2.5, 0.0]) @ rot + [2.5, 0.0]
+    for s in samples:  # each part is centred on one couch, a different one each
+        d = np.hypot(*(truth - s.footprint_centre_xy).T)
+        assert d.min() < 0.35
+    assert {int(np.argmin(np.hypot(*(truth - s.footprint_centre_xy).T))) for s in samples} == {0, 1}
+    # and without splitting they are one
+    joined, _ = extract_samples(_l_of_two_couches(yaw_deg), params=SampleParams(split_min_area_m2=None))
+    assert len(joined) == 1
+
+
+@pytest.mark.parametrize("size", [(2.0, 0.8), (2.1, 1.6), (1.0, 0.6)])
+def test_one_rectangular_item_is_never_split(size):
+    for yaw in (0.0, 30.0):
+        pts = box_points(2.5, 0.0, *size, 0.0, 0.6)
+        t = math.radians(yaw)
+        xy = (pts[:, :2] - [2.5, 0.0]) @ np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]]) + [2.5, 0.0]
+        samples, stats = extract_samples(np.column_stack([xy, pts[:, 2]]))
+        assert len(samples) == 1 and stats.get("split", 0) == 0
+
+
+def test_the_two_couches_of_the_two_bedroom_house_are_seen_as_two():
+    # the L of couch_1 and couch_2 in its living room, seen from the meeting room
+    from assistant.geometry import Pose2D
+    from assistant.perception.frame import analyse_frame
+    from assistant.sim.renderer import DepthRenderer
+    from assistant.world import load_world
+
+    world = load_world("two-bedrooms-house")
+    frame = DepthRenderer(world, "original", seed=0).render(Pose2D(0.5, 4.0, -math.pi / 2))
+    samples = analyse_frame(frame).samples
+    big = [s for s in samples if len(s.cells_xy_m) * SampleParams().grid_m ** 2 > 0.8]
+    assert len(big) == 2
+    # in the camera frame (x ahead, y left, camera at the origin looking south): couch_2 lies
+    # across the view about 3.5 m ahead, couch_1 along it on the left
+    far, near = sorted(big, key=lambda s: -s.footprint_centre_xy[0])
+    assert far.footprint_centre_xy[0] == pytest.approx(3.5, abs=0.3)
+    assert near.footprint_centre_xy[0] < far.footprint_centre_xy[0] - 1.0
