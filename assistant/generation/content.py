@@ -176,8 +176,12 @@ def wall_band(room, side_angle: float, grid, thickness_m: float = 0.2):
 
 
 def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose=None,
-                    include_room: bool = True) -> list[Candidate]:
-    """Every true candidate content node for the object (see the module docstring)."""
+                    include_room: bool = True, policy_score=None) -> list[Candidate]:
+    """Every true candidate content node for the object (see the module docstring).
+    ``policy_score``: a :class:`~assistant.generation.policy_score.PolicyRelationScore`; a
+    furniture relation's probability is then the geometric mean of the spatial relations'
+    (direction weight × nearness) and the learned policy model's score of the pair (kept alone
+    when no model covers the RDT)."""
     from assistant.geometry import box_polygon
     from assistant.spatial import dir_srv as _dir_srv
     from assistant.spatial import dist_srv as _dist_srv
@@ -247,6 +251,13 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
             if p >= MIN_NEAR and p > best.get("beside", (0.0, ""))[0]:
                 best["beside"] = (p, ref.id)
         for direction, (p, ref_id) in sorted(best.items()):
+            if policy_score is not None:
+                ref = next(r for r in refs if r.id == ref_id)
+                srvs = {"dir:ref->tar": dir_srv(ref, support), "dist:ref->tar": dist_srv(ref, support),
+                        "dist:tar->ref": dist_srv(support, ref)}
+                q = policy_score.score(f"{ref_word}-{direction}-{word}", srvs)
+                if q is not None:
+                    p = math.sqrt(p * q)
             # the references are in the support's room: furniture elsewhere is not near them.
             # A look-alike stays a candidate for the listener only when the relation holds for
             # it loosely AND fits it nearly as well as the support (a listener, like the fetch

@@ -65,6 +65,9 @@ def add_arguments(parser) -> None:
                         help="skip the listener test")
     parser.add_argument("--listener-perception", choices=("sensed", "oracle"), default="sensed",
                         help="the listener robot's furniture perception (default sensed)")
+    parser.add_argument("--policy-probabilities", action="store_true",
+                        help="furniture relations' P also from the learned policy models (geometric "
+                             "mean with the spatial relations'); default: spatial relations alone")
     parser.add_argument("--no-parse", action="store_true",
                         help="check the generator's own selected nodes instead of parsing the "
                              "sentence back (faster; does not test the wording)")
@@ -170,7 +173,8 @@ def _bleu2(words: list[str], references: list[list[str]]) -> float | None:
 # ------------------------------------------------------------------------------ run
 def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=None,
              listener: bool = False, search: str = "oracle", miss_rate: float = 0.0,
-             listener_perception: str = "sensed", searches: dict | None = None) -> dict:
+             listener_perception: str = "sensed", searches: dict | None = None,
+             policies: bool = False) -> dict:
     """Search (``sensed``) or read (``oracle``) each object, compose and score the
     descriptions; returns ``{"rows": [...], "summary": {...}}``. ``searches`` (``(world,
     scene, object) → SearchResult``) reuses finished searches instead of searching again."""
@@ -179,7 +183,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
     from assistant.generation.content import entry_heading, support_of
     from assistant.grounding.types import RDT
 
-    describer = Describer(load_generation_model(corpus_paths))
+    describer = Describer(load_generation_model(corpus_paths), policies="default" if policies else None)
     parser = None
     parser_note = None
     if parse:
@@ -405,7 +409,8 @@ def run(args) -> int:
     report = evaluate(args.worlds, args.corpus, parse=not args.no_parse,
                       log=None if args.json else (lambda m: print(m, file=sys.stderr, flush=True)),
                       listener=args.listener, search=args.search, miss_rate=args.miss_rate,
-                      listener_perception=args.listener_perception, searches=searches)
+                      listener_perception=args.listener_perception, searches=searches,
+                      policies=args.policy_probabilities)
     if args.save_searches:
         import pickle
 

@@ -214,22 +214,23 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
 SHAPE_CELL_M = 0.1
 #: directions of the cuts :func:`split_joined_items` tries (radians)
 CUT_ANGLES = np.radians(np.arange(0.0, 180.0, 15.0))
+_AXES = np.stack([np.cos(CUT_ANGLES), np.sin(CUT_ANGLES)])  # (2, angles)
+_NORMALS = np.stack([-np.sin(CUT_ANGLES), np.cos(CUT_ANGLES)])
 
 
 def _rect_fill(cells: np.ndarray) -> tuple[float, float, float]:
     """(fill, long-axis angle, aspect) of the best-fitting rectangle of ``cells`` (K, 2, cell
     units) over :data:`CUT_ANGLES`: the share of it they cover, the direction (radians, mod π)
     of its longer side, and longer over shorter side."""
-    best = (0.0, 0.0, 1.0)
-    for angle in CUT_ANGLES:
-        u = cells @ np.array([np.cos(angle), np.sin(angle)])
-        v = cells @ np.array([-np.sin(angle), np.cos(angle)])
-        lu, lv = np.ptp(u) + 1.0, np.ptp(v) + 1.0
-        fill = len(cells) / (lu * lv)
-        if fill > best[0]:
-            best = (float(fill), float(angle if lu >= lv else angle + np.pi / 2) % np.pi,
-                    float(max(lu, lv) / min(lu, lv)))
-    return best
+    if len(cells) == 0:
+        return 0.0, 0.0, 1.0
+    u = cells @ _AXES  # (K, angles): every direction at once
+    v = cells @ _NORMALS
+    lu, lv = np.ptp(u, axis=0) + 1.0, np.ptp(v, axis=0) + 1.0
+    fills = len(cells) / (lu * lv)
+    k = int(np.argmax(fills))
+    angle = CUT_ANGLES[k] if lu[k] >= lv[k] else CUT_ANGLES[k] + np.pi / 2
+    return float(fills[k]), float(angle % np.pi), float(max(lu[k], lv[k]) / min(lu[k], lv[k]))
 
 
 def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_aspect: float = 1.8,
