@@ -212,8 +212,11 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
                          lambda x: True, "support", forced=True))
     listener_inside = listener_pose is not None and room.contains(listener_pose.x, listener_pose.y)
     if include_room and not listener_inside:
+        # said whenever the listener is elsewhere (6.2 II.D: only a listener in the room makes
+        # it unnecessary): a robot, or a person, told only "on the table to the right of the
+        # bed" does not know which room to go to
         out.append(Candidate(ContentNode("room", "room", None, 1.0, {"room": room_name}),
-                             lambda x, r=room_name: x.room == r, "room"))
+                             lambda x, r=room_name: x.room == r, "room", forced=True))
 
     # references by word: "the chair" may be any chair of the room, so a relation rules a
     # distractor out only when it holds for none of them

@@ -9,6 +9,7 @@ from assistant.geometry.shapes import (
     point_in_polygon,
     polygon_area,
     rectangle,
+    rectangle_fill,
     regular_polygon,
 )
 
@@ -22,6 +23,7 @@ __all__ = [
     "point_in_polygon",
     "polygon_area",
     "rectangle",
+    "rectangle_fill",
     "regular_polygon",
     "wrap_angle",
     "wrap_angles",

@@ -49,3 +49,25 @@ def polygon_area(polygon_xy: np.ndarray) -> float:
     p = np.asarray(polygon_xy, dtype=float)
     x, y = p[:, 0], p[:, 1]
     return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+#: directions (radians) over which :func:`rectangle_fill` looks for the best rectangle
+FILL_ANGLES = np.radians(np.arange(0.0, 180.0, 15.0))
+_FILL_AXES = np.stack([np.cos(FILL_ANGLES), np.sin(FILL_ANGLES)])  # (2, angles)
+_FILL_NORMALS = np.stack([-np.sin(FILL_ANGLES), np.cos(FILL_ANGLES)])
+
+
+def rectangle_fill(cells: np.ndarray) -> tuple[float, float, float]:
+    """(fill, long-axis angle, aspect) of the best-fitting rectangle of a set of grid cells
+    (K, 2, in cell units) over :data:`FILL_ANGLES`: the share of the rectangle they cover, the
+    direction (radians, mod π) of its longer side, and longer over shorter side. One piece of
+    furniture covers most of its rectangle (0.8–1); two at an angle, an L, about half."""
+    cells = np.asarray(cells, dtype=float).reshape(-1, 2)
+    if len(cells) == 0:
+        return 0.0, 0.0, 1.0
+    u, v = cells @ _FILL_AXES, cells @ _FILL_NORMALS  # (K, angles): every direction at once
+    lu, lv = np.ptp(u, axis=0) + 1.0, np.ptp(v, axis=0) + 1.0
+    fills = len(cells) / (lu * lv)
+    k = int(np.argmax(fills))
+    angle = FILL_ANGLES[k] if lu[k] >= lv[k] else FILL_ANGLES[k] + np.pi / 2
+    return float(fills[k]), float(angle % np.pi), float(max(lu[k], lv[k]) / min(lu[k], lv[k]))

@@ -27,6 +27,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from assistant.geometry import rectangle_fill
+from assistant.geometry.shapes import FILL_ANGLES
+
 
 @dataclass(frozen=True)
 class SampleParams:
@@ -213,24 +216,7 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
 #: cell size (metres) on which :func:`split_joined_items` judges a component's shape
 SHAPE_CELL_M = 0.1
 #: directions of the cuts :func:`split_joined_items` tries (radians)
-CUT_ANGLES = np.radians(np.arange(0.0, 180.0, 15.0))
-_AXES = np.stack([np.cos(CUT_ANGLES), np.sin(CUT_ANGLES)])  # (2, angles)
-_NORMALS = np.stack([-np.sin(CUT_ANGLES), np.cos(CUT_ANGLES)])
-
-
-def _rect_fill(cells: np.ndarray) -> tuple[float, float, float]:
-    """(fill, long-axis angle, aspect) of the best-fitting rectangle of ``cells`` (K, 2, cell
-    units) over :data:`CUT_ANGLES`: the share of it they cover, the direction (radians, mod π)
-    of its longer side, and longer over shorter side."""
-    if len(cells) == 0:
-        return 0.0, 0.0, 1.0
-    u = cells @ _AXES  # (K, angles): every direction at once
-    v = cells @ _NORMALS
-    lu, lv = np.ptp(u, axis=0) + 1.0, np.ptp(v, axis=0) + 1.0
-    fills = len(cells) / (lu * lv)
-    k = int(np.argmax(fills))
-    angle = CUT_ANGLES[k] if lu[k] >= lv[k] else CUT_ANGLES[k] + np.pi / 2
-    return float(fills[k]), float(angle % np.pi), float(max(lu[k], lv[k]) / min(lu[k], lv[k]))
+CUT_ANGLES = FILL_ANGLES
 
 
 def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_aspect: float = 1.8,
@@ -265,11 +251,11 @@ def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_asp
         score = np.minimum(fill_a, fill_b)
         for k in np.argsort(-score)[:3]:
             pool.append((float(score[k]), normal, float((al[i[k] - 1] + al[i[k]]) / 2)))
-    whole = _rect_fill(cells)[0]
+    whole = rectangle_fill(cells)[0]
     best = (-1.0, None, 0.0)
     for _, normal, offset in sorted(pool, key=lambda c: -c[0])[:candidates]:
         side = cells @ normal > offset
-        (fa, angle_a, aspect_a), (fb, angle_b, aspect_b) = _rect_fill(cells[side]), _rect_fill(cells[~side])
+        (fa, angle_a, aspect_a), (fb, angle_b, aspect_b) = rectangle_fill(cells[side]), rectangle_fill(cells[~side])
         crossing = abs(((angle_a - angle_b) + np.pi / 2) % np.pi - np.pi / 2)
         if min(aspect_a, aspect_b) < min_aspect or crossing < min_crossing:
             continue  # not two long items at an angle (a bed cut at its headboard, a desk and its chair)

@@ -19,10 +19,33 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from assistant.geometry import GridMap, Pose2D
+from assistant.geometry import GridMap, Pose2D, rectangle_fill
 from assistant.world.entities import floorplan_entities, world_grid
 from assistant.world.entity import Entity, EntityKind
 from assistant.world.model import World
+
+#: categories with a front: two of them facing different ways are two items
+FRONT_CATEGORIES = frozenset({"chair", "couch", "bed"})
+
+
+def _largest_footprint_m2(category: str) -> float:
+    """The largest floor area (m²) of the catalogue's models of ``category``."""
+    from assistant.world.catalogue import load_catalogue
+
+    areas = [m.length_m * m.width_m for m in load_catalogue().models.values() if m.category == category]
+    return max(areas) if areas else 0.0
+
+
+@dataclass(frozen=True)
+class _Seen:
+    """One detection a track absorbed: its cells, weight and what it said."""
+
+    cells: frozenset
+    weight: float
+    category: str
+    orientation: float | None
+    subclass: str | None
+    xy: tuple[float, float] | None
 
 
 @dataclass
@@ -37,6 +60,7 @@ class _Track:
     confidence: float = 0.0
     subclass: str | None = None
     position: list = field(default_factory=lambda: [0.0, 0.0, 0.0])  # Σw·x, Σw·y, Σw
+    history: list = field(default_factory=list)  # _Seen of every detection absorbed
 
     def cells(self, share: float) -> np.ndarray:
         """Cells seen in at least ``share`` of the best cell's weight."""
@@ -62,14 +86,18 @@ class EnvironmentModel:
     ``update(entities, robot_pose)`` fuses one frame's short-term entities (e.g. from
     :meth:`FurnitureDetector.detect`): each is matched to the track whose footprint it overlaps
     most (intersection over the smaller footprint ≥ ``match_overlap``, or centres nearer than
-    ``match_distance_m``), else starts a new track. ``entities()`` gives the long-term entities
+    ``match_distance_m``), else starts a new track. A detection of an item with a front that
+    covers only part of its track and faces ``split_turn_rad`` or more away from it splits the
+    track in two (two couches in an L that an early view saw as one sample). ``entities()`` gives the long-term entities
     followed by the furniture, named by category word (``table``, ``chair``…), with ids in
     order of first detection.
     """
 
     def __init__(self, world: World, resolution_m: float = 0.1, match_overlap: float = 0.25,
                  match_distance_m: float = 0.45, cell_share: float = 0.3,
-                 view_range_m: float = 4.0, view_half_fov_rad: float = math.radians(26.0)):
+                 view_range_m: float = 4.0, view_half_fov_rad: float = math.radians(26.0),
+                 split_turn_rad: float = math.radians(60.0), split_min_area_m2: float = 0.3,
+                 split_min_track_share: float = 1.6, split_max_fill: float = 0.7):
         self.world = world
         self.grid: GridMap = world_grid(world, resolution_m)
         self.long_term: list[Entity] = floorplan_entities(world, self.grid)
@@ -78,6 +106,10 @@ class EnvironmentModel:
         self.cell_share = cell_share
         self.view_range_m = view_range_m
         self.view_half_fov_rad = view_half_fov_rad
+        self.split_turn_rad = split_turn_rad
+        self.split_min_area_m2 = split_min_area_m2
+        self.split_min_track_share = split_min_track_share
+        self.split_max_fill = split_max_fill
         self._tracks: list[_Track] = []
         self._next = 0
         self.frames = 0
@@ -93,6 +125,8 @@ class EnvironmentModel:
             if len(cells) == 0:
                 continue
             track = self._match(cells)
+            if track is not None and self._is_another_item(track, det, cells):
+                track = self._split_off(track, cells)
             if track is None:
                 track = _Track(f"furniture:{self._next}")
                 self._next += 1
@@ -137,21 +171,87 @@ class EnvironmentModel:
         return best
 
     def _absorb(self, track: _Track, det: Entity, cells: np.ndarray) -> None:
-        w = max(float(det.confidence), 0.05)
-        for c in cells:
-            track.hits[(int(c[0]), int(c[1]))] += w
-        track.votes[det.category or det.name] += w
-        if det.orientation_rad is not None:
-            track.sin += w * math.sin(det.orientation_rad)
-            track.cos += w * math.cos(det.orientation_rad)
-        track.seen += 1
-        track.missed = max(0, track.missed - 1)
-        track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
-        track.subclass = det.attributes.get("subclass", track.subclass)
+        xy = None
         if "x" in det.attributes and "y" in det.attributes:  # the detector's centre estimate
-            track.position[0] += w * float(det.attributes["x"])
-            track.position[1] += w * float(det.attributes["y"])
+            xy = (float(det.attributes["x"]), float(det.attributes["y"]))
+        seen = _Seen(frozenset((int(c[0]), int(c[1])) for c in cells), max(float(det.confidence), 0.05),
+                     det.category or det.name, det.orientation_rad, det.attributes.get("subclass"), xy)
+        self._add(track, seen)
+        track.missed = max(0, track.missed - 1)
+
+    @staticmethod
+    def _add(track: _Track, seen: _Seen) -> None:
+        w = seen.weight
+        for c in seen.cells:
+            track.hits[c] += w
+        track.votes[seen.category] += w
+        if seen.orientation is not None:
+            track.sin += w * math.sin(seen.orientation)
+            track.cos += w * math.cos(seen.orientation)
+        track.seen += 1
+        track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
+        track.subclass = seen.subclass or track.subclass
+        if seen.xy is not None:
+            track.position[0] += w * seen.xy[0]
+            track.position[1] += w * seen.xy[1]
             track.position[2] += w
+        track.history.append(seen)
+
+    def _is_another_item(self, track: _Track, det: Entity, cells: np.ndarray) -> bool:
+        """Whether a detection that overlaps ``track`` is a second item the track has merged
+        with a first (two couches in an L seen as one from an early view): a piece of furniture
+        with a front covering only part of the track, facing at least
+        :attr:`split_turn_rad` away from it, with enough of the track left beside it, on a track
+        larger than :attr:`split_min_track_share` times the catalogue's largest item of that
+        category (one couch whose front a view got wrong is not split) and filling less than
+        :attr:`split_max_fill` of its best rectangle (an L, not a bed seen in parts)."""
+        if det.orientation_rad is None or track.orientation is None:
+            return False
+        if (det.category or det.name) not in FRONT_CATEGORIES:
+            return False
+        turn = abs(math.remainder(det.orientation_rad - track.orientation, 2 * math.pi))
+        if turn < self.split_turn_rad:
+            return False
+        mine = track.cells(self.cell_share)
+        cell_area = self.grid.resolution_m ** 2
+        if len(mine) * cell_area < self.split_min_track_share * _largest_footprint_m2(det.category or det.name):
+            return False  # no bigger than one such item: a detection that got its front wrong
+        if rectangle_fill(mine)[0] >= self.split_max_fill:
+            return False  # one rectangle (a bed seen in parts), not two items at an angle
+        keys = {tuple(c) for c in cells}
+        rest = [c for c in map(tuple, mine) if c not in keys]
+        return (len(mine) - len(rest) < 0.6 * len(mine)
+                and len(rest) * cell_area >= self.split_min_area_m2)
+
+    def _split_off(self, track: _Track, cells: np.ndarray) -> _Track:
+        """Split ``track`` in two along ``cells`` (the second item's): the detections that lay
+        mostly on those cells go to a new track, those that lay mostly off them stay, and the
+        ones that spanned both (the merged views) keep only their cells off them and say
+        nothing of either item's front or category. Returns the new track."""
+        keys = {(int(c[0]), int(c[1])) for c in cells}
+        old_history = track.history
+        new = _Track(f"furniture:{self._next}")
+        self._next += 1
+        self._tracks.append(new)
+        stay = _Track(track.id, seen=0, missed=track.missed)
+        for seen in old_history:
+            on = len(seen.cells & keys) / max(1, len(seen.cells))
+            if on >= 0.6:
+                self._add(new, seen)
+            elif on <= 0.2:
+                self._add(stay, seen)
+            else:  # a view of both: its cells off the new item's stay, its words are dropped
+                off = frozenset(seen.cells - keys)
+                if off:
+                    for c in off:
+                        stay.hits[c] += seen.weight
+        for name in ("hits", "votes", "sin", "cos", "seen", "confidence", "subclass", "position", "history"):
+            setattr(track, name, getattr(stay, name))
+        if not track.votes:  # only merged views so far: keep the category they voted for
+            for seen in old_history:
+                track.votes[seen.category] += seen.weight
+        new.missed = 0
+        return new
 
     def _in_view(self, track: _Track, pose: Pose2D) -> bool:
         """Whether the track's centre lies well inside the camera's field of view and range."""

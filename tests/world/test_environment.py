@@ -52,3 +52,45 @@ def test_a_detection_on_another_grid_is_regridded(apartment):
     model.update([det])
     assert model.furniture()[0].centroid_m == pytest.approx([4.5, 3.0], abs=0.1)
     assert model.furniture()[0].grid == model.grid
+
+
+def _l_view(model, confidence=0.9):
+    """One detection covering two couches that meet in an L (as one sample): facing between."""
+    a = rectangle(Pose2D(4.0, 3.0, 0.0), 2.0, 0.8)  # along x, facing +y (90°)
+    b = rectangle(Pose2D(5.4, 4.4, math.pi / 2), 2.0, 0.8)  # along y at a's east end, facing west
+    cells = np.vstack([Entity.from_polygon("a", "couch", EntityKind.SHORT_TERM, a, model.grid).cells,
+                       Entity.from_polygon("b", "couch", EntityKind.SHORT_TERM, b, model.grid).cells])
+    return Entity("d", "couch", EntityKind.SHORT_TERM, model.grid, np.unique(cells, axis=0),
+                  math.radians(135), category="couch", confidence=confidence)
+
+
+def test_a_track_of_two_couches_is_split_when_each_is_seen_facing_its_own_way(apartment):
+    model = EnvironmentModel(apartment)
+    model.update([_l_view(model)])  # the first view: one sample, one track
+    assert len(model.furniture()) == 1
+    model.update([seen(model, 4.0, 3.0, 2.0, 0.8, "couch", math.pi / 2)])  # then the first couch alone
+    model.update([seen(model, 5.4, 4.4, 0.8, 2.0, "couch", math.pi)])      # and the second
+    couches = sorted(model.furniture(), key=lambda e: e.centroid_m[0])
+    assert len(couches) == 2
+    assert couches[0].orientation_rad == pytest.approx(math.pi / 2, abs=0.05)
+    assert abs(math.remainder(couches[1].orientation_rad - math.pi, 2 * math.pi)) < 0.05
+    assert couches[0].centroid_m == pytest.approx([4.0, 3.0], abs=0.25)
+    assert couches[1].centroid_m == pytest.approx([5.4, 4.4], abs=0.25)
+
+
+def test_one_couch_seen_once_with_its_front_wrong_is_not_split(apartment):
+    model = EnvironmentModel(apartment)
+    for _ in range(3):
+        model.update([seen(model, 4.5, 3.0, 2.0, 0.7, "couch", math.pi / 2)])
+    # a partial view of its end, read facing the other way round
+    model.update([seen(model, 5.2, 3.0, 0.6, 0.7, "couch", -math.pi / 2)])
+    assert len(model.furniture()) == 1
+
+
+def test_a_bed_seen_in_parts_with_one_front_wrong_stays_one_bed(apartment):
+    model = EnvironmentModel(apartment)
+    for _ in range(2):
+        model.update([seen(model, 5.0, -3.0, 2.1, 1.2, "bed", -math.pi / 2)])
+    # a view of its head end read as a couch facing sideways: not a second item
+    model.update([seen(model, 5.0, -2.3, 1.2, 0.8, "couch", 0.0)])
+    assert len(model.furniture()) == 1
