@@ -53,7 +53,8 @@ from assistant.executor.sensing import (
     entity_room,
     environment_items,
 )
-from assistant.geometry import Pose2D, wrap_angle
+from assistant.geometry import Pose2D, polygon_lattice, wrap_angle
+from assistant.grounding.vocabulary import NO_TARGET
 from assistant.world import Entity, World
 
 #: half the Kinect's horizontal field of view (57°), radians
@@ -66,8 +67,6 @@ DIRECTION_ANGLES = {"front": 0.0, "left": math.pi / 2, "back": math.pi, "right":
 WALL_ANGLES = {"front": 0.0, "back": 0.0, "left": math.pi / 2, "right": -math.pi / 2}
 #: references that are not furniture (no perceived item to look for)
 PLACE_REFERENCES = ("robot", "room", "move", "wall", "door")
-#: the target word of a node with no target furniture
-NO_TARGET_WORD = "non"
 
 
 @dataclass
@@ -255,16 +254,8 @@ class FetchTask:
 
     def _room_points(self, room: str, step_m: float = 0.25) -> np.ndarray:
         """Floor points (N, 2) of ``room`` on a ``step_m`` lattice."""
-        from assistant.geometry import point_in_polygon
-
         r = next((r for r in self.world.floorplan.rooms if r.name == room), None)
-        if r is None:
-            return np.zeros((0, 2))
-        poly = r.polygon_array
-        lo, hi = poly.min(axis=0), poly.max(axis=0)
-        xs, ys = np.meshgrid(np.arange(lo[0] + step_m / 2, hi[0], step_m), np.arange(lo[1] + step_m / 2, hi[1], step_m))
-        pts = np.column_stack([xs.ravel(), ys.ravel()])
-        return pts[point_in_polygon(pts, poly)]
+        return np.zeros((0, 2)) if r is None else polygon_lattice(r.polygon_array, step_m)
 
     def _unseen(self, points: np.ndarray, range_m: float | None = None) -> np.ndarray:
         """Which ``points`` lie farther than ``range_m`` (default :attr:`survey_range_m`) from
@@ -455,7 +446,7 @@ class FetchTask:
         report = NodeReport(str(node), "static", ExecutionStatus.REFERENCE_NOT_FOUND.value)
         # furniture references first: "between the two chairs" singles a table out better than
         # "across the room"; the other pairs still weigh in (:meth:`_agreement`)
-        rdts = sorted(rdts, key=lambda r: r.reference in ("robot", "room", "move", "wall", "door"))
+        rdts = sorted(rdts, key=lambda r: r.reference in PLACE_REFERENCES)
         looked_again = False
         said_from = self._pose()  # "on your right" keeps meaning this pose's right after a look elsewhere
         self._describe(node)
@@ -502,7 +493,7 @@ class FetchTask:
         """While some furniture the node names (``words``: reference and target words) is not
         seen in ``room``, look again from further in (:meth:`_survey` with
         :attr:`reference_range_m`), at most :attr:`max_looks_for_reference` times."""
-        words = sorted({w for w in words if w and w != NO_TARGET_WORD})
+        words = sorted({w for w in words if w and w != NO_TARGET})
         for _ in range(self.max_looks_for_reference):
             if all(self._in_room(room, w) for w in words):
                 return

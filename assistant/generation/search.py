@@ -274,14 +274,9 @@ class ObjectSearch:
 
     # ------------------------------------------------------------------ coverage
     def _samples(self, room) -> tuple[np.ndarray, np.ndarray]:
-        from assistant.geometry import point_in_polygon
+        from assistant.geometry import polygon_lattice
 
-        poly = room.polygon_array
-        lo, hi = poly.min(axis=0), poly.max(axis=0)
-        xs, ys = np.meshgrid(np.arange(lo[0] + self.sample_m / 2, hi[0], self.sample_m),
-                             np.arange(lo[1] + self.sample_m / 2, hi[1], self.sample_m))
-        pts = np.column_stack([xs.ravel(), ys.ravel()])
-        pts = pts[point_in_polygon(pts, poly)]
+        pts = polygon_lattice(room.polygon_array, self.sample_m)
         weights = np.ones(len(pts))
         for e in self.perception.furniture():
             cells = e.points_m()
@@ -310,7 +305,7 @@ class ObjectSearch:
     def _next_vantage(self, room):
         """The free reachable spot of ``room`` covering the most uncovered weight per metre
         (None when coverage is reached or nothing adds enough)."""
-        from assistant.geometry import point_in_polygon
+        from assistant.geometry import polygon_lattice
 
         pts, weights = self._samples(room)
         if len(pts) == 0:
@@ -322,12 +317,7 @@ class ObjectSearch:
         if float(weights[covered].sum()) >= self.coverage * total:
             return None
         occ = self.obstacles.occupancy()
-        poly = room.polygon_array
-        lo, hi = poly.min(axis=0), poly.max(axis=0)
-        step = 0.3
-        xs, ys = np.meshgrid(np.arange(lo[0] + step / 2, hi[0], step), np.arange(lo[1] + step / 2, hi[1], step))
-        cand = np.column_stack([xs.ravel(), ys.ravel()])
-        cand = cand[point_in_polygon(cand, poly)]
+        cand = polygon_lattice(room.polygon_array, 0.3)
         if len(cand) == 0:
             return None
         cand = cand[occ.clearance_at(cand) >= self.clearance_m]
@@ -369,15 +359,11 @@ class ObjectSearch:
                     and self.world.floorplan.room_at(self._pose().x, self._pose().y) is not None:
                 return entered
         # open plan (no door on the way) or a blocked door: the nearest free spot inside
+        from assistant.geometry import polygon_lattice
+
         r = self.world.floorplan.room(room)
         occ = self.obstacles.occupancy()
-        poly = r.polygon_array
-        from assistant.geometry import point_in_polygon
-
-        lo, hi = poly.min(axis=0), poly.max(axis=0)
-        xs, ys = np.meshgrid(np.arange(lo[0] + 0.2, hi[0], 0.2), np.arange(lo[1] + 0.2, hi[1], 0.2))
-        pts = np.column_stack([xs.ravel(), ys.ravel()])
-        pts = pts[point_in_polygon(pts, poly)]
+        pts = polygon_lattice(r.polygon_array, 0.2, offset_m=0.2)
         pts = pts[(occ.clearance_at(pts) >= self.clearance_m) & occ.reachable_from(self._pose(), pts)]
         pose = self._pose()
         for _ in range(3):

@@ -71,3 +71,15 @@ def rectangle_fill(cells: np.ndarray) -> tuple[float, float, float]:
     k = int(np.argmax(fills))
     angle = FILL_ANGLES[k] if lu[k] >= lv[k] else FILL_ANGLES[k] + np.pi / 2
     return float(fills[k]), float(angle % np.pi), float(max(lu[k], lv[k]) / min(lu[k], lv[k]))
+
+
+def polygon_lattice(polygon_xy: np.ndarray, step_m: float, offset_m: float | None = None) -> np.ndarray:
+    """Points (N, 2) of a square lattice of ``step_m`` inside a polygon (metres): x and y run
+    from the polygon's bounding-box corner plus ``offset_m`` (default half a step) in steps up
+    to its far side, and the points outside the polygon are left out."""
+    poly = np.asarray(polygon_xy, dtype=float)
+    lo, hi = poly.min(axis=0), poly.max(axis=0)
+    offset = step_m / 2 if offset_m is None else offset_m
+    xs, ys = np.meshgrid(np.arange(lo[0] + offset, hi[0], step_m), np.arange(lo[1] + offset, hi[1], step_m))
+    pts = np.column_stack([xs.ravel(), ys.ravel()])
+    return pts[point_in_polygon(pts, poly)]
