@@ -128,9 +128,7 @@ class EnvironmentModel:
             if track is not None and self._is_another_item(track, det, cells):
                 track = self._split_off(track, cells)
             if track is None:
-                track = _Track(f"furniture:{self._next}")
-                self._next += 1
-                self._tracks.append(track)
+                track = self._new_track()
             self._absorb(track, det, cells)
             matched.add(track.id)
         if robot_pose is not None:
@@ -229,29 +227,29 @@ class EnvironmentModel:
         ones that spanned both (the merged views) keep only their cells off them and say
         nothing of either item's front or category. Returns the new track."""
         keys = {(int(c[0]), int(c[1])) for c in cells}
-        old_history = track.history
-        new = _Track(f"furniture:{self._next}")
-        self._next += 1
-        self._tracks.append(new)
-        stay = _Track(track.id, seen=0, missed=track.missed)
-        for seen in old_history:
+        stay = _Track(track.id, missed=track.missed)  # takes the track's place in the model
+        self._tracks[self._tracks.index(track)] = stay
+        new = self._new_track()
+        for seen in track.history:
             on = len(seen.cells & keys) / max(1, len(seen.cells))
             if on >= 0.6:
                 self._add(new, seen)
             elif on <= 0.2:
                 self._add(stay, seen)
             else:  # a view of both: its cells off the new item's stay, its words are dropped
-                off = frozenset(seen.cells - keys)
-                if off:
-                    for c in off:
-                        stay.hits[c] += seen.weight
-        for name in ("hits", "votes", "sin", "cos", "seen", "confidence", "subclass", "position", "history"):
-            setattr(track, name, getattr(stay, name))
-        if not track.votes:  # only merged views so far: keep the category they voted for
-            for seen in old_history:
-                track.votes[seen.category] += seen.weight
-        new.missed = 0
+                for c in seen.cells - keys:
+                    stay.hits[c] += seen.weight
+        if not stay.votes:  # only merged views so far: keep the category they voted for
+            for seen in track.history:
+                stay.votes[seen.category] += seen.weight
         return new
+
+    def _new_track(self) -> _Track:
+        """A new, empty track with the next id, added to the model."""
+        track = _Track(f"furniture:{self._next}")
+        self._next += 1
+        self._tracks.append(track)
+        return track
 
     def _in_view(self, track: _Track, pose: Pose2D) -> bool:
         """Whether the track's centre lies well inside the camera's field of view and range."""
