@@ -220,11 +220,10 @@ CUT_ANGLES = FILL_ANGLES
 
 
 def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_aspect: float = 1.8,
-              min_crossing: float = np.radians(45.0)) -> tuple[float, float, np.ndarray | None, float]:
-    """(whole, score, normal, offset): how well ``cells`` (K, 2, cell units) fill their
-    best-fitting rectangle (``whole``), and the straight cut — a line ``x · normal = offset`` —
-    after which both parts fill their own best rectangles best, ``score`` being the poorer
-    part's fill; parts smaller than ``min_cells`` are not allowed. All cuts of one direction
+              min_crossing: float = np.radians(45.0)) -> tuple[float, np.ndarray | None, float]:
+    """(score, normal, offset): the straight cut of ``cells`` (K, 2, cell units) — a line
+    ``x · normal = offset`` — after which both parts fill their own best rectangles best,
+    ``score`` being the poorer part's fill; parts smaller than ``min_cells`` are not allowed. All cuts of one direction
     are scored at once, by the parts' rectangles aligned with the cut (running minima and
     maxima along the sorted cells); the ``candidates`` best are scored again with each part's
     own best rectangle (an arm of a V is not aligned with the cut along the other arm), and
@@ -251,7 +250,6 @@ def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_asp
         score = np.minimum(fill_a, fill_b)
         for k in np.argsort(-score)[:3]:
             pool.append((float(score[k]), normal, float((al[i[k] - 1] + al[i[k]]) / 2)))
-    whole = rectangle_fill(cells)[0]
     best = (-1.0, None, 0.0)
     for _, normal, offset in sorted(pool, key=lambda c: -c[0])[:candidates]:
         side = cells @ normal > offset
@@ -262,7 +260,7 @@ def _best_cut(cells: np.ndarray, min_cells: float, candidates: int = 12, min_asp
         score = min(fa, fb)
         if score > best[0]:
             best = (score, normal, offset)
-    return whole, best[0], best[1], best[2]
+    return best
 
 
 def split_joined_items(labels: np.ndarray, count: int, p: SampleParams = SampleParams()
@@ -298,10 +296,11 @@ def split_joined_items(labels: np.ndarray, count: int, p: SampleParams = SampleP
         box[coarse[:, 0] + 1, coarse[:, 1] + 1] = True
         box = ndimage.binary_fill_holes(ndimage.binary_closing(box, np.ones((3, 3), dtype=bool)))
         cells = np.argwhere(box).astype(float)
-        whole, score, normal, offset = _best_cut(cells, min_cells)
-        if whole >= p.split_max_fill or normal is None:
-            continue
-        if score < max(p.split_min_part_fill, whole + p.split_min_gain):
+        whole = rectangle_fill(cells)[0]
+        if whole >= p.split_max_fill:
+            continue  # one rectangle: no cut to look for (most components)
+        score, normal, offset = _best_cut(cells, min_cells)
+        if normal is None or score < max(p.split_min_part_fill, whole + p.split_min_gain):
             continue
         if out is labels:
             out = labels.copy()
