@@ -13,11 +13,12 @@ Features: the normal feature histogram M_h, optionally joined by the shape descr
 * ``autoencoder`` — :class:`AutoencoderClassifier`: a 512-128-32 encoder pre-trained to
   reconstruct its input (``MLPRegressor``), then fine-tuned with a softmax output
   (``MLPClassifier`` warm-started from the encoder's weights);
-* ``forest`` — a random forest (500 trees, balanced class weights) on the raw features (not
+* ``forest`` — a random forest (100 trees, balanced class weights) on the raw features (not
   in the dissertation; its errors differ from the SVM's);
 * ``vote`` — the soft vote (mean class probability) of the Gaussian SVM, its probabilities
-  calibrated by cross-validation (``CalibratedClassifierCV``), and the forest. The default:
-  it measured best on the instances the models never saw (docs/perception.md).
+  calibrated by cross-validation (``CalibratedClassifierCV``), and the forest. Measured, not
+  the default: ``gsvm`` is (``models.DEFAULT_METHOD``; the tables of docs/perception.md,
+  ``assistant eval perception``).
 
 :func:`category_of` maps a subclass back to its category.
 """
@@ -213,8 +214,9 @@ def _forest(features: str, random_state: int, n_estimators: int = 100):
 
 class QuickForest(RandomForestClassifier):
     """``RandomForestClassifier`` whose ``predict_proba`` walks the trees in a plain loop: for
-    the one to five samples of a frame that takes ~2 ms instead of the ~20 ms of the threaded
-    version (the same trees, the same probabilities)."""
+    the one to five samples of a frame that avoids the threaded version's per-call start-up
+    (the same trees, the same probabilities; ``assistant eval perception`` prints the
+    prediction time per sample of each classifier)."""
 
     def predict_proba(self, X):
         check_is_fitted(self, "estimators_")

@@ -94,19 +94,9 @@ def nominal_camera_to_floor(mount: CameraMount) -> np.ndarray:
 
 
 def transform(points: np.ndarray, matrix: np.ndarray) -> np.ndarray:
-    """Apply a 4×4 rigid transform to (N, 3) points.
-
-    One matrix-vector product per output axis: an (N, 3) × (3, 3) product goes to the BLAS
-    matrix-matrix routine, which for an inner size of 3 was 2× slower single-threaded and up to
-    30× slower with its threads competing on the loaded 2-core machine (measured, see
-    ``benchmarks/bench_perception.py``). Same values up to float rounding.
-    """
-    pts = np.asarray(points, dtype=float)
-    out = np.empty((len(pts), 3))
-    for k in range(3):
-        out[:, k] = pts @ matrix[k, :3]
-        out[:, k] += matrix[k, 3]
-    return out
+    """Apply a 4×4 rigid transform to (N, 3) points (off the per-frame path: the frame's own
+    transform is ``frame._sample_points``)."""
+    return np.asarray(points, dtype=float) @ matrix[:3, :3].T + matrix[:3, 3]
 
 
 def _lsq_plane(points: np.ndarray, towards: np.ndarray) -> np.ndarray:
@@ -257,9 +247,9 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     large upward plane is also searched for (:func:`_search_floor`), and the lower of the two
     planes wins.
 
-    All points take part: fitting on every 3rd point (tried for speed) moved the floor of the
-    real frames by up to 9 mm and 1° (the least-squares refit of a real, slightly warped floor
-    settles where it starts), and the NYU couch was then read as a bed.
+    All points take part (fitting on a subset, tried for speed with a throw-away change, moved
+    the floor of the real frames and changed what was detected; not kept, not reproducible by a
+    command).
     """
     pts = points_camera
     if len(pts) < MIN_FLOOR_POINTS:
