@@ -61,7 +61,7 @@ def run_batch(
                 emit_json(handle(request))
             except json.JSONDecodeError as error:
                 emit_json({"error": f"line {number}: not JSON: {error.msg}", "line": number})
-            except (AssistantError, ValueError, KeyError, TypeError) as error:
+            except (AssistantError, ValueError, KeyError, TypeError, argparse.ArgumentTypeError) as error:
                 emit_json({"error": f"line {number}: {error}", "line": number})
     return 0
 
@@ -88,6 +88,17 @@ def parse_pose(text: str) -> tuple[float, float, float]:
     if not all(math.isfinite(v) for v in (x, y, heading)):
         raise argparse.ArgumentTypeError(f"pose values must be finite, got {text!r}")
     return x, y, heading
+
+
+def miss_probability(text: str) -> float:
+    """Parse a probability in [0, 1) for argparse (a detector's miss rate)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a probability from 0 to below 1, got {text!r}") from None
+    if not 0.0 <= value < 1.0:
+        raise argparse.ArgumentTypeError(f"a miss rate must be at least 0 and below 1, got {value}")
+    return value
 
 
 def add_json_flag(parser: argparse.ArgumentParser) -> None:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, parse_pose, run_batch
+from assistant.cli.common import add_json_flag, emit_json, miss_probability, parse_pose, run_batch
 
 
 def register(subparsers) -> None:
@@ -37,7 +37,7 @@ def register(subparsers) -> None:
     parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
                         help="sensed (default): the simulated robot searches with its own "
                              "perception; oracle: read the object and furniture from the world file")
-    parser.add_argument("--miss-rate", type=float, default=0.0, metavar="P",
+    parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",
                         help="sensed search: probability that the object detector misses a visible "
                              "object in a frame (default 0)")
     parser.add_argument("--seed", type=int, default=0, help="sensed search: simulator seed")

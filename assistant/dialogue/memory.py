@@ -87,15 +87,37 @@ class ObjectMemory:
             data = json.loads(self.path.read_text(encoding="utf-8"))
             if not isinstance(data, dict) or data.get("version") not in READABLE_VERSIONS:
                 raise ValueError(f"expected an object with version {MEMORY_VERSION}")
-            for i, item in enumerate(data.get("sightings", [])):
+            sightings = data.get("sightings", [])
+            if not isinstance(sightings, list):
+                raise ValueError("sightings: expected a list")
+            for i, item in enumerate(sightings):
                 try:
                     s = Sighting(**item)
-                except TypeError as error:
+                    s.time_s = float(s.time_s)
+                    s.x_m = None if s.x_m is None else float(s.x_m)
+                    s.y_m = None if s.y_m is None else float(s.y_m)
+                except (TypeError, ValueError) as error:
                     raise ValueError(f"sightings[{i}]: {error}") from None
                 self._items[(s.world, s.object)] = s
         except (OSError, ValueError) as error:  # json.JSONDecodeError is a ValueError
             self._items.clear()
-            self.load_problem = f"{self.path}: {error}; starting with an empty memory"
+            kept = self._keep_unreadable()
+            self.load_problem = (f"{self.path}: {error}; starting with an empty memory"
+                                 + (f" (the unreadable file is kept as {kept})" if kept else ""))
+
+    def _keep_unreadable(self) -> Path | None:
+        """Move an unreadable memory file aside, so the next save does not overwrite what it
+        held (``NAME.unreadable-<time>``); None when it cannot be moved."""
+        target = self.path.with_name(f"{self.path.name}.unreadable-{int(self.clock())}")
+        n = 1
+        while target.exists():  # never over an earlier one
+            target = self.path.with_name(f"{self.path.name}.unreadable-{int(self.clock())}-{n}")
+            n += 1
+        try:
+            os.replace(self.path, target)
+        except OSError:
+            return None
+        return target
 
     def save(self) -> None:
         if self.path is None:

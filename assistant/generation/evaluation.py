@@ -44,6 +44,8 @@ DOOR_MAX_M = 1.0
 
 
 def add_arguments(parser) -> None:
+    from assistant.cli.common import miss_probability
+
     parser.add_argument("--worlds", nargs="+", default=list(STUDY_WORLDS), metavar="WORLD",
                         help="worlds to describe (default: the four study homes)")
     parser.add_argument("--corpus", action="append", metavar="PATH",
@@ -51,7 +53,7 @@ def add_arguments(parser) -> None:
     parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
                         help="sensed (default): the simulated robot searches and the description "
                              "uses its perceived furniture; oracle: the world file")
-    parser.add_argument("--miss-rate", type=float, default=0.0, metavar="P",
+    parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",
                         help="object detector miss rate during the search (default 0)")
     parser.add_argument("--save-searches", metavar="FILE",
                         help="write the finished searches to FILE (pickle) to re-score later")

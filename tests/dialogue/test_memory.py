@@ -1,5 +1,7 @@
 import json
 
+import pytest
+
 from assistant.dialogue.memory import ObjectMemory, age_phrase
 
 
@@ -43,3 +45,20 @@ def test_age_phrase():
     assert age_phrase(7200) == "2 hours ago"
     assert age_phrase(86400) == "yesterday"
     assert age_phrase(3 * 86400) == "3 days ago"
+
+
+@pytest.mark.parametrize("content", [
+    {"version": 2, "sightings": None},
+    {"version": 2, "sightings": [{"object": "mug", "world": "apartment", "room": "bedroom", "x_m": "left"}]},
+])
+def test_a_malformed_memory_file_is_kept_aside_not_overwritten(tmp_path, content):
+    path = tmp_path / "memory.json"
+    path.write_text(json.dumps(content))
+    memory = ObjectMemory(path)
+    assert memory.load_problem and "empty memory" in memory.load_problem
+    kept = list(tmp_path.glob("memory.json.unreadable-*"))
+    assert len(kept) == 1 and json.loads(kept[0].read_text()) == content
+    assert str(kept[0]) in memory.load_problem
+    memory.remember("apartment", "fork", "living room", time_s=1)  # the new memory saves beside it
+    assert json.loads(kept[0].read_text()) == content
+    assert ObjectMemory(path).recall("apartment", "fork") is not None

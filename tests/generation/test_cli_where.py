@@ -65,3 +65,18 @@ def test_sensed_search_is_the_default_and_is_labelled(capsys, generation_model):
 def test_unknown_search_mode_is_an_error(capsys):
     with pytest.raises(SystemExit):
         _run(["mug", "--world", "apartment", "--search", "psychic"], capsys)
+
+
+def test_a_bad_pose_or_miss_rate_is_a_message_not_a_traceback(tmp_path, capsys, generation_model):
+    batch = tmp_path / "req.jsonl"
+    batch.write_text('{"object": "mug", "world": "apartment", "listener": "a,b"}\n'
+                     '{"object": "mug", "world": "apartment", "miss_rate": "often"}\n'
+                     '{"object": "mug", "world": "apartment"}\n')
+    code, out = _run(["--batch", str(batch), "--search", "oracle"], capsys)
+    lines = [json.loads(x) for x in out.splitlines()]
+    assert code == 0 and len(lines) == 3
+    assert "X,Y,HEADING" in lines[0]["error"] and "often" in lines[1]["error"]
+    assert lines[2]["found"]
+    with pytest.raises(SystemExit):  # argparse's usage message, exit status 2
+        _run(["mug", "--world", "apartment", "--miss-rate", "1.5"], capsys)
+    assert "below 1" in capsys.readouterr().err
