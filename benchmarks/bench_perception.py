@@ -63,20 +63,9 @@ def simulated_frames(views: int) -> list:
 
 def real_frames(root: Path) -> list:
     """(label, frame) of the real frames of a realdata folder (as the evaluation reads them)."""
-    from assistant.perception.depthfile import load_depth_png
-    from assistant.perception.realdata import FOLDERS
+    from assistant.perception.realdata import load_frames
 
-    out = []
-    for folder, (files, k, scale, invalid, _labels) in FOLDERS.items():
-        for name in files:
-            path = root / folder / name
-            if not path.exists():
-                continue
-            frame, _ = load_depth_png(path, k, scale, invalid_values=invalid)
-            if folder == "kinect2_livingroom_esanet":  # flying pixels under 0.5 m
-                frame.depth_m[frame.depth_m < 0.5] = 0.0
-            out.append((f"{folder}/{name}", frame))
-    return out
+    return [(f"{folder}/{name}", frame) for folder, name, frame in load_frames(root)]
 
 
 @contextmanager

@@ -40,17 +40,13 @@ def models_for_word(word: str) -> tuple[tuple[str, float], ...]:
 
     out = []
     for name, model in load_catalogue().models.items():
-        words = set(name.lower().split()) | {str(getattr(model, "shape", "")).lower()}
+        words = set(name.lower().split()) | {model.shape.lower()}
         if word.lower() in words:
             area = model.length_m * model.width_m
-            if str(getattr(model, "shape", "")) == "round":
+            if model.shape == "round":
                 area *= math.pi / 4
             out.append((model.category, area))
     return tuple(out)
-
-
-def _area(entity: Entity) -> float:
-    return len(entity.cells) * entity.grid.resolution_m ** 2
 
 
 def _word_fit(word: str, entity: Entity) -> float:
@@ -64,7 +60,7 @@ def _word_fit(word: str, entity: Entity) -> float:
     models = models_for_word(word)
     if not models:
         return 1.0
-    area = _area(entity)
+    area = entity.area_m2
     best = 0.0
     for model_category, expected in models:
         fit = 1.0 if model_category == category else WRONG_CATEGORY

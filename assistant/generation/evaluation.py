@@ -218,8 +218,8 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         room = world.floorplan.room(support.room)
         # the person asking stands where the robot was asked, the world's start pose: walls are
         # named ("the back wall") as they walk into the room from there
-        listener = world.start
-        heading = entry_heading(world.floorplan, room.name, listener)
+        listener_pose = world.start
+        heading = entry_heading(world.floorplan, room.name, listener_pose)
         search_row = None
         if search == "sensed":
             from assistant.generation.search import search_for
@@ -230,7 +230,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
                                    miss_rate=miss_rate)
             done[(wname, scene, obj.name)] = found
             t0 = time.perf_counter()
-            result = describer.describe_search(found, world.floorplan, listener_pose=listener)
+            result = describer.describe_search(found, world.floorplan, listener_pose=listener_pose)
             compose_ms = (time.perf_counter() - t0) * 1000
             error_m = (math.hypot(found.sighting.x - obj.x, found.sighting.y - obj.y)
                        if found.found else None)
@@ -245,7 +245,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
                           "furniture_perceived": len(found.furniture), "status": found.status}
         else:
             t0 = time.perf_counter()
-            result = describer.describe(sighting, env, world.floorplan, listener_pose=listener)
+            result = describer.describe(sighting, env, world.floorplan, listener_pose=listener_pose)
             compose_ms = (time.perf_counter() - t0) * 1000
         text = result.description
         meant = {n.rdt for n in result.selected if n.kind == "relation"}
@@ -289,7 +289,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
                 and (not said_room or e.room == room.name)]
         unique = bool(result.found) and not any(
             _holds_for(rdts, e, env, world.floorplan.room(e.room), world.floorplan,
-                       entry_heading(world.floorplan, e.room, listener)) and not _size_rules_out(text, e)
+                       entry_heading(world.floorplan, e.room, listener_pose)) and not _size_rules_out(text, e)
             for e in same)
         recovered = meant <= {str(r) for r in rdts}
         words = [w.strip(",.").lower() for w in text.split()]

@@ -232,7 +232,7 @@ def typical_area_m2(category: str | None) -> float | None:
     """Median footprint (m², length × width) of the catalogue's models of a category."""
     from assistant.world import load_catalogue
 
-    areas = [m.length_m * m.width_m for m in load_catalogue().models.values() if m.category == category]
+    areas = load_catalogue().footprints_m2(category)
     return float(np.median(areas)) if areas else None
 
 

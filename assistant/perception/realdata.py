@@ -34,36 +34,41 @@ def _floor_to_camera(floor, xyz: np.ndarray) -> np.ndarray:
     return (np.atleast_2d(xyz) - m[:3, 3]) @ m[:3, :3]
 
 
-def evaluate_realdata(root: str | Path, detector) -> dict:
-    """Per folder and frame: the floor, the detections, and the scores its labels allow."""
+def load_frames(root: str | Path):
+    """``(folder, file name, DepthFrame)`` of every known real frame under ``root`` that exists,
+    read with its folder's depth units, intrinsics and invalid values (the Kinect v2 frame's
+    flying pixels under 0.5 m cleared, as its README says)."""
     from assistant.perception.depthfile import load_depth_png
 
     root = Path(root)
-    out: dict = {"root": str(root), "folders": {}}
-    for folder, (files, k, scale, invalid, labels) in FOLDERS.items():
-        base = root / folder
-        if not base.is_dir():
-            continue
-        frames = []
+    for folder, (files, k, scale, invalid, _labels) in FOLDERS.items():
         for name in files:
-            path = base / name
+            path = root / folder / name
             if not path.exists():
                 continue
             frame, _ = load_depth_png(path, k, scale, invalid_values=invalid)
             if folder == "kinect2_livingroom_esanet":  # flying pixels under 0.5 m
                 frame.depth_m[frame.depth_m < 0.5] = 0.0
-            result = detector.analyse(frame, use_mount=False)
-            entry = {"file": name, "floor": result.floor.to_dict() if result.floor else None,
-                     "detections": [d.to_dict() for d in result.detections],
-                     "reason": result.reason, "ms": round(result.timings_ms.get("total", 0.0), 1)}
-            if labels == "sun":
-                entry.update(_score_sun(base, name[:6], result, frame))
-            elif labels == "boxes2d":
-                entry.update(_score_boxes(base, result, frame))
-            elif labels == "negative":
-                entry["false_beds_or_couches"] = sum(d.category in ("bed", "couch") for d in result.detections)
-            frames.append(entry)
-        out["folders"][folder] = frames
+            yield folder, name, frame
+
+
+def evaluate_realdata(root: str | Path, detector) -> dict:
+    """Per folder and frame: the floor, the detections, and the scores its labels allow."""
+    root = Path(root)
+    out: dict = {"root": str(root), "folders": {f: [] for f in FOLDERS if (root / f).is_dir()}}
+    for folder, name, frame in load_frames(root):
+        base, labels = root / folder, FOLDERS[folder][4]
+        result = detector.analyse(frame, use_mount=False)
+        entry = {"file": name, "floor": result.floor.to_dict() if result.floor else None,
+                 "detections": [d.to_dict() for d in result.detections],
+                 "reason": result.reason, "ms": round(result.timings_ms.get("total", 0.0), 1)}
+        if labels == "sun":
+            entry.update(_score_sun(base, name[:6], result, frame))
+        elif labels == "boxes2d":
+            entry.update(_score_boxes(base, result, frame))
+        elif labels == "negative":
+            entry["false_beds_or_couches"] = sum(d.category in ("bed", "couch") for d in result.detections)
+        out["folders"][folder].append(entry)
     return out
 
 

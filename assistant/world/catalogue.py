@@ -57,6 +57,10 @@ class Catalogue:
         except KeyError:
             raise UnknownNameError("furniture model", name, self.models) from None
 
+    def footprints_m2(self, category: str | None) -> tuple[float, ...]:
+        """Floor areas (m², length × width) of the models of ``category`` (empty if none)."""
+        return tuple(m.length_m * m.width_m for m in self.models.values() if m.category == category)
+
     def object(self, name: str) -> ObjectModel:
         try:
             return self.objects[name]

@@ -32,8 +32,7 @@ def _largest_footprint_m2(category: str) -> float:
     """The largest floor area (m²) of the catalogue's models of ``category``."""
     from assistant.world.catalogue import load_catalogue
 
-    areas = [m.length_m * m.width_m for m in load_catalogue().models.values() if m.category == category]
-    return max(areas) if areas else 0.0
+    return max(load_catalogue().footprints_m2(category), default=0.0)
 
 
 @dataclass(frozen=True)
