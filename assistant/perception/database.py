@@ -31,6 +31,7 @@ import io
 import math
 import textwrap
 from dataclasses import dataclass, field, fields
+from functools import lru_cache
 from importlib import resources
 
 import numpy as np
@@ -379,8 +380,9 @@ def _tree_digest(tree: ast.AST) -> str:
     return hashlib.sha256(ast.dump(tree, annotate_fields=False, include_attributes=False).encode()).hexdigest()
 
 
+@lru_cache(maxsize=1)
 def _source_fingerprint() -> str:
-    """Hash of the data and code a database is made from: the detector's front half, the
+    """Hash (once per process) of the data and code a database is made from: the detector's front half, the
     meshes, the Kinect noise model and the camera geometry, this module's rendering code, and
     the catalogue and instance files. Only code that renders or analyses the views counts
     (the rest of the simulator's renderer, for one, does not), compared by syntax tree."""
@@ -400,15 +402,10 @@ def _source_fingerprint() -> str:
     return h.hexdigest()
 
 
-_FINGERPRINT: list[str] = []
-
-
 def database_key(name: str, items: list[Item], plan: ViewPlan,
                  params: FrameParams = FrameParams()) -> str:
     """``name-<hash>``: the cache key of a database (content hash of its inputs)."""
-    if not _FINGERPRINT:
-        _FINGERPRINT.append(_source_fingerprint())
-    digest = hashlib.sha256((_FINGERPRINT[0] + repr(plan) + repr(params)
+    digest = hashlib.sha256((_source_fingerprint() + repr(plan) + repr(params)
                              + repr([(i.name, i.source) for i in items])).encode()).hexdigest()[:16]
     return f"{name}-{digest}"
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -75,12 +76,17 @@ def models_key(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
     """Cache key of the trained models: the training databases' keys (their code and data),
     the classifier and orientation code (by syntax tree, so comments and docstrings do not
     count) and the settings. The same inputs give the same key in every process."""
-    from assistant.perception import classifiers, orientation
-
     items = items if items is not None else study_items()
     keys = [database_key(f"train{i}", items, plan) for i, plan in enumerate(plans)]
-    code = code_digest(classifiers, orientation, fit_models, classifier_input, PerceptionModels)
-    return hashlib.sha256(repr((keys, method, features, code)).encode()).hexdigest()[:16]
+    return hashlib.sha256(repr((keys, method, features, _training_code())).encode()).hexdigest()[:16]
+
+
+@lru_cache(maxsize=1)
+def _training_code() -> str:
+    """:func:`code_digest` of the classifier and orientation code (once per process)."""
+    from assistant.perception import classifiers, orientation
+
+    return code_digest(classifiers, orientation, fit_models, classifier_input, PerceptionModels)
 
 
 def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
