@@ -53,6 +53,7 @@ from assistant.executor.sensing import (
     entity_room,
     environment_items,
 )
+from assistant.executor.task import BudgetSpent, TaskSteps
 from assistant.geometry import Pose2D, polygon_lattice, wrap_angle
 from assistant.grounding.vocabulary import NO_TARGET
 from assistant.world import Entity, World
@@ -124,12 +125,8 @@ class FetchResult:
                 "seen": [s.to_dict() for s in self.seen], "details": self.details}
 
 
-class _Budget(Exception):
-    """Raised inside the task when the simulated-time budget is spent."""
-
-
 @dataclass
-class FetchTask:
+class FetchTask(TaskSteps):
     """Carries out grounded plans in ``world`` with a robot.
 
     ``perception``: a :class:`~assistant.executor.sensing.FurnitureSource`; ``policies``: a
@@ -192,31 +189,13 @@ class FetchTask:
         self.navigator = Navigator(self.world, self.obstacles.occupancy, localizer=self.localizer, max_replans=10)
         self._last_map = None
 
-    def _event(self, name: str, **data) -> None:
-        if self.on_event is not None:
-            self.on_event(name, data)
-
-    def _pose(self) -> Pose2D:
-        return self.navigator.pose(self._robot)
-
-    def _spent(self) -> float:
-        return self._robot.odometry().timestamp_s - self._t0
-
-    def _step(self, result: ExecutionResult) -> ExecutionResult:
-        self._dist += result.distance_m
-        if self._spent() > self.max_sim_seconds:
-            raise _Budget()
-        return result
-
     def _observe_moving(self, frame, pose: Pose2D) -> None:
         """Perception on the localizer's frames while driving: only in the target room, and
         only every :attr:`perceive_every_m` metres or :attr:`perceive_every_rad` of turning
         (detection is the costly part of a fetch)."""
         if self._perceive_room is None or room_of(self.world, pose) != self._perceive_room:
             return
-        last = self._last_perceived
-        if last is not None and math.hypot(pose.x - last.x, pose.y - last.y) < self.perceive_every_m \
-                and abs(wrap_angle(pose.theta - last.theta)) < self.perceive_every_rad:
+        if not self._moved_enough(self._last_perceived, pose):
             return
         self._last_perceived = pose
         self.perception.observe(frame, pose)
@@ -226,14 +205,8 @@ class FetchTask:
         if self.object_detector is None:
             return
         sightings = self.object_detector.detect(frame)
-        if not sightings:
-            return
-        from assistant.executor.sightings import place_sightings
-
-        placed = place_sightings(self.world, self.perception.furniture(), sightings)
-        for item in placed:
-            self._seen[item.name] = item
-        self._event("objects_seen", seen=placed, pose=pose)
+        if sightings:
+            self._report_sightings(sightings, pose)
 
     def _observe_here(self) -> None:
         frame = self._robot.depth_frame()
@@ -304,7 +277,7 @@ class FetchTask:
         out = dict(plan=plan_dict, nodes=reports)
         try:
             result = self._run(plan, reports, out)
-        except _Budget:
+        except BudgetSpent:
             result = FetchResult(ExecutionStatus.TIMEOUT,
                                  f"the fetch used up its budget of {self.max_sim_seconds:.0f} s of robot time",
                                  **out)

@@ -49,6 +49,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from assistant.executor.task import BudgetSpent, TaskSteps
 from assistant.generation.types import ObjectSighting
 
 __all__ = ["ObjectSearch", "SearchResult", "room_order", "search_for", "to_generation_sighting"]
@@ -106,10 +107,6 @@ class _Found(Exception):
     """Raised inside the search loop once the object is seen and the view finished."""
 
 
-class _Budget(Exception):
-    """Raised when the simulated-time budget is spent."""
-
-
 def to_generation_sighting(sighting, room: str | None, seen_from, time_s: float) -> ObjectSighting:
     """The detector's :class:`~assistant.perception.objects.ObjectSighting` as the generation
     layer's :class:`ObjectSighting` (room from the floor plan, pose seen from, search time)."""
@@ -150,7 +147,7 @@ def room_order(world, start_room: str | None, start_xy=None) -> list[str]:
 
 
 @dataclass
-class ObjectSearch:
+class ObjectSearch(TaskSteps):
     """Explores ``world`` with a robot until ``detector`` reports the object (module docstring).
 
     ``perception``: a :class:`~assistant.executor.sensing.FurnitureSource` (the environment model
@@ -203,27 +200,9 @@ class ObjectSearch:
         self.localizer = FloorplanLocalizer(self.world, listeners=listeners) if self.localize else None
         self.navigator = Navigator(self.world, self.obstacles.occupancy, localizer=self.localizer, max_replans=10)
 
-    def _event(self, name: str, **data) -> None:
-        if self.on_event is not None:
-            self.on_event(name, data)
-
-    def _pose(self):
-        return self.navigator.pose(self._robot)
-
-    def _spent(self) -> float:
-        return self._robot.odometry().timestamp_s - self._t0
-
-    def _step(self, result):
-        self._dist += result.distance_m
-        if self._spent() > self.max_sim_seconds:
-            raise _Budget()
-        return result
-
     # ------------------------------------------------------------------ perception
     def _perceive(self, frame, pose, furniture: bool = True) -> bool:
         """Both perceptions on one frame; True when the object is among the sightings."""
-        from assistant.executor.sightings import place_sightings
-
         if frame is None:
             return False
         if furniture:
@@ -236,10 +215,7 @@ class ObjectSearch:
         sightings = self.detector.detect(frame)
         if not sightings:
             return False
-        placed = place_sightings(self.world, self.perception.furniture(), sightings)
-        for p in placed:
-            self._seen[p.name] = p
-        self._event("objects_seen", seen=placed, pose=pose)
+        self._report_sightings(sightings, pose)
         hit = next((s for s in sightings if s.name.lower() == self._name), None)
         if hit is not None and (self._found is None or hit.distance_m < self._found[0].distance_m):
             self._found = (hit, pose)
@@ -248,9 +224,7 @@ class ObjectSearch:
     def _moving_frame(self, frame, pose) -> None:
         """The localizer's frames while driving: objects on every one, furniture every
         :attr:`perceive_every_m` metres or :attr:`perceive_every_rad` of turning."""
-        last = self._last_perceived
-        furniture = last is None or math.hypot(pose.x - last.x, pose.y - last.y) >= self.perceive_every_m \
-            or abs(math.remainder(pose.theta - last.theta, 2 * math.pi)) >= self.perceive_every_rad
+        furniture = self._moved_enough(self._last_perceived, pose)
         if furniture:
             self._last_perceived = pose
         self._perceive(frame, pose, furniture)
@@ -452,7 +426,7 @@ class ObjectSearch:
                 status, message = "found", f"saw the {self._found[0].name}"
             else:
                 message = f"did not see a {name} in " + ", ".join(searched) if searched else "could enter no room"
-        except _Budget:
+        except BudgetSpent:
             status = "found" if self._found is not None else "timeout"
             message = f"search used up its budget of {self.max_sim_seconds:.0f} s of robot time"
         return self._result(name, status, message, searched, found_wall)
