@@ -110,13 +110,14 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
     from assistant.errors import AssistantError, UnknownNameError
     from assistant.generation import (not_found_description, oracle_environment, oracle_sighting,
                                       style_for_question)
+    from assistant.generation.types import SEARCH_MODES
     from assistant.geometry import Pose2D
     from assistant.world import load_world
 
     if not name or not world_name:
         raise AssistantError("a request needs 'object' and 'world'")
-    if search not in ("sensed", "oracle"):
-        raise UnknownNameError("search", str(search), ("sensed", "oracle"))
+    if search not in SEARCH_MODES:
+        raise UnknownNameError("search", str(search), SEARCH_MODES)
     world = load_world(world_name)
     scene = world.scene(scene).name
     # the person asking stands where the robot was asked (the world's start pose) unless told

@@ -178,7 +178,7 @@ def distinct_phrases(world, scene: str, items) -> list[str]:
     words = [r.word if r is not None else None for r in refs]
     if None not in words and len(set(words)) == len(words):
         return [f"the one by the {w}" for w in words]
-    doors = [d for d in world.floorplan.doors if items[0].room in getattr(d, "connects", ())]
+    doors = world.floorplan.doors_of(items[0].room)
     if len(items) == 2 and doors:
         cx = sum(i.x for i in items) / 2.0
         cy = sum(i.y for i in items) / 2.0

@@ -37,11 +37,13 @@ CONVERSATION_KEYS = {"name", "world", "scene", "memory", "turns", "covers", "sea
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    from assistant.generation.types import SEARCH_MODES
+
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="conversation files or folders (default: the repository's corpus/dialogues)")
     parser.add_argument("--perception", choices=("oracle", "sensed"), default="oracle",
                         help="furniture perception for fetches (default: oracle)")
-    parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
+    parser.add_argument("--search", choices=SEARCH_MODES, default="sensed",
                         help="'where is my X' for an object not in memory: the robot searches (sensed, "
                              "default) or the world file answers (oracle); a conversation's own "
                              "'search:' key wins")

@@ -74,9 +74,10 @@ class Services:
     def __init__(self, perception: str = "oracle", parser=None, describer=None, fetcher=None,
                  seed: int = 0, search: str = "sensed", searcher=None):
         from assistant.errors import UnknownNameError
+        from assistant.generation.types import SEARCH_MODES
 
-        if search not in ("sensed", "oracle"):
-            raise UnknownNameError("search", str(search), ("sensed", "oracle"))
+        if search not in SEARCH_MODES:
+            raise UnknownNameError("search", str(search), SEARCH_MODES)
         self.perception = perception
         self.search_mode = search
         self.seed = seed

@@ -45,12 +45,13 @@ DOOR_MAX_M = 1.0
 
 def add_arguments(parser) -> None:
     from assistant.cli.common import miss_probability
+    from assistant.generation.types import SEARCH_MODES
 
     parser.add_argument("--worlds", nargs="+", default=list(STUDY_WORLDS), metavar="WORLD",
                         help="worlds to describe (default: the four study homes)")
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="annotated corpus to learn from (default: the repository's corpus/)")
-    parser.add_argument("--search", choices=("sensed", "oracle"), default="sensed",
+    parser.add_argument("--search", choices=SEARCH_MODES, default="sensed",
                         help="sensed (default): the simulated robot searches and the description "
                              "uses its perceived furniture; oracle: the world file")
     parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",

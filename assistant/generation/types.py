@@ -16,6 +16,10 @@ from dataclasses import dataclass, field
 
 from assistant.geometry import Pose2D
 
+#: how "where is my X" finds the object: the robot searches (``sensed``) or the world file
+#: answers (``oracle``, to separate the language from the search)
+SEARCH_MODES = ("sensed", "oracle")
+
 #: description styles: a static description ("the mug is on the table in front of the couch")
 #: or a how-to-find (dynamic) one from the listener's pose ("go into the living room, turn right…")
 STYLES = ("static", "dynamic")
