@@ -27,6 +27,9 @@ FOLDERS = {
                               (518.8579, 519.4696, 325.5825, 253.7362), 1e-3, (65535,), "negative"),
 }
 SUN_CATEGORY = {"bed": "bed", "night_stand": "small table"}
+#: a labelled object with less than this share of its depth pixels inside the detector's
+#: sample range (``SampleParams.max_forward_m`` ahead) is reported as out of range
+IN_RANGE_SHARE = 0.5
 
 
 def _floor_to_camera(floor, xyz: np.ndarray) -> np.ndarray:
@@ -63,17 +66,60 @@ def evaluate_realdata(root: str | Path, detector) -> dict:
                  "detections": [d.to_dict() for d in result.detections],
                  "reason": result.reason, "ms": round(result.timings_ms.get("total", 0.0), 1)}
         if labels == "sun":
-            entry.update(_score_sun(base, name[:6], result, frame))
+            entry.update(_score_sun(base, name[:6], result, frame,
+                                    detector.params.samples.max_forward_m))
         elif labels == "boxes2d":
             entry.update(_score_boxes(base, result, frame))
         elif labels == "negative":
             entry["false_beds_or_couches"] = sum(d.category in ("bed", "couch") for d in result.detections)
         out["folders"][folder].append(entry)
+    out["summary"] = summarise(out)
     return out
 
 
-def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
-    """Floor vs Rtilt; each labelled bed / night stand matched to the nearest detection."""
+def summarise(report: dict) -> dict:
+    """The issue's real-frame checks counted over every frame: floors found; labelled beds,
+    couches and night stands detected as such (SUN beds also among those with most of their
+    pixels inside the sample range); beds or couches where none is labelled — in the negative
+    frames, and elsewhere (a detection that no labelled bed or couch took)."""
+    frames = [f for fs in report["folders"].values() for f in fs]
+    s = {"frames": len(frames), "floor_found": sum(f["floor"] is not None for f in frames)}
+    tally: dict = {}
+
+    def count(what: str, correct: bool, in_range: bool = True) -> None:
+        t = tally.setdefault(what, {"correct": 0, "labelled": 0, "in_range_correct": 0,
+                                    "in_range": 0})
+        t["labelled"] += 1
+        t["correct"] += bool(correct)
+        t["in_range"] += bool(in_range)
+        t["in_range_correct"] += bool(correct and in_range)
+
+    false_elsewhere = 0
+    for f in frames:
+        taken: set[int] = set()
+        for m in f.get("matches", []):
+            count(m["object"], m["correct"], m.get("in_range_share", 1.0) >= IN_RANGE_SHARE)
+            if m.get("detection") is not None and m["correct"]:
+                taken.add(m["detection"])
+        for b in f.get("boxes", []):
+            if b["object"] in ("couch", "bed", "chair", "large_table", "small_table"):
+                count(b["object"], b["correct"])
+            if b["object"] in ("couch", "bed"):
+                taken.update(i for i, c in zip(b.get("detection_indices", []), b["detected"])
+                             if c == b["object"].replace("_", " "))
+        if "false_beds_or_couches" not in f:
+            false_elsewhere += sum(d["category"] in ("bed", "couch") and i not in taken
+                                   for i, d in enumerate(f["detections"]))
+    s["labelled"] = tally
+    s["false_beds_or_couches_in_negatives"] = sum(f.get("false_beds_or_couches", 0) for f in frames)
+    s["false_beds_or_couches_elsewhere"] = false_elsewhere
+    return s
+
+
+def _score_sun(base: Path, frame_id: str, result, frame, range_m: float) -> dict:
+    """Floor vs Rtilt; each labelled bed / night stand matched to the nearest detection, with
+    the share of its box-mask pixels (``_boxmask.png``) less than ``range_m`` ahead of the
+    camera in the floor frame the detector found — the points the detector can use."""
     data = json.loads((base / f"{frame_id}_boxes.json").read_text())
     rtilt = np.asarray(data["Rtilt"], dtype=float)
     up_cam = np.array([rtilt[2, 0], -rtilt[2, 2], rtilt[2, 1]])  # upright z in camera axes
@@ -88,15 +134,16 @@ def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
         p = np.atleast_2d(p_cam)
         return np.column_stack([p[:, 0], p[:, 2], -p[:, 1]]) @ rtilt.T
 
+    in_range = _in_range_shares(base / f"{frame_id}_boxmask.png", frame, floor, range_m)
     dets = []
-    for d in result.detections:
+    for i, d in enumerate(result.detections):
         centre = to_upright(_floor_to_camera(floor, np.array([d.x, d.y, d.height_m / 2])))[0]
         yaw = None
         if d.facing is not None:
             tip = np.array([d.x + math.cos(d.facing), d.y + math.sin(d.facing), d.height_m / 2])
             v = to_upright(_floor_to_camera(floor, tip))[0] - centre
             yaw = math.atan2(v[1], v[0])
-        dets.append((d, centre, yaw))
+        dets.append((d, centre, yaw, i))
     matches = []
     for obj in data["objects"]:
         wanted = SUN_CATEGORY.get(obj["sun_class"])
@@ -107,9 +154,11 @@ def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
         row = {"object": obj["sun_class"], "expected": wanted,
                "pixels": obj["n_valid_depth_pixels_inside_box"],
                "hard": obj["n_valid_depth_pixels_inside_box"] < 2000}
+        if obj["index"] in in_range:
+            row["in_range_share"] = in_range[obj["index"]]
         if best is not None and np.linalg.norm(best[1][:2] - gt) < 1.0:
-            d, centre, yaw = best
-            row.update({"detected": d.category, "correct": d.category == wanted,
+            d, centre, yaw, index = best
+            row.update({"detected": d.category, "detection": index, "correct": d.category == wanted,
                         "position_error_m": round(float(np.linalg.norm(centre[:2] - gt)), 3)})
             if yaw is not None and wanted == "bed":
                 err = abs((yaw - obj["yaw_upright_rad"] + math.pi) % (2 * math.pi) - math.pi)
@@ -119,6 +168,27 @@ def _score_sun(base: Path, frame_id: str, result, frame) -> dict:
         matches.append(row)
     score["matches"] = matches
     return score
+
+
+def _in_range_shares(mask_path: Path, frame, floor, range_m: float) -> dict[int, float]:
+    """Box index → share (0–1) of that box's mask pixels less than ``range_m`` ahead (floor
+    frame x); {} without a mask file."""
+    if not mask_path.exists():
+        return {}
+    from PIL import Image
+
+    mask = np.asarray(Image.open(mask_path))
+    depth = np.asarray(frame.depth_m)
+    if mask.shape != depth.shape:
+        return {}
+    k = frame.intrinsics
+    v, u = np.nonzero((mask > 0) & np.isfinite(depth) & (depth > 0))
+    z = depth[v, u]
+    cam = np.column_stack([(u - k.cx) * z / k.fx, (v - k.cy) * z / k.fy, z])
+    m = floor.camera_to_floor
+    ahead = cam @ m[0, :3] + m[0, 3]
+    labels = mask[v, u]
+    return {int(i): round(float(np.mean(ahead[labels == i] < range_m)), 3) for i in np.unique(labels)}
 
 
 def _score_boxes(base: Path, result, frame) -> dict:
@@ -131,17 +201,19 @@ def _score_boxes(base: Path, result, frame) -> dict:
     floor = result.floor
     projected = []
     if floor is not None:
-        for d in result.detections:
+        for i, d in enumerate(result.detections):
             heights = np.append(np.arange(0.05, max(d.height_m, 0.1), 0.1), d.height_m)
             axis = np.column_stack([np.full(len(heights), d.x), np.full(len(heights), d.y), heights])
             p = _floor_to_camera(floor, axis)
             p = p[p[:, 2] > 0.1]
-            projected.append((d, k.fx * p[:, 0] / p[:, 2] + k.cx, k.fy * p[:, 1] / p[:, 2] + k.cy))
+            projected.append((i, d, k.fx * p[:, 0] / p[:, 2] + k.cx, k.fy * p[:, 1] / p[:, 2] + k.cy))
     rows = []
     for obj in data["objects"]:
         x0, y0, x1, y1 = obj["bbox2d"]
-        inside = [d for d, u, v in projected if np.any((x0 <= u) & (u <= x1) & (y0 <= v) & (v <= y1))]
+        inside = [(i, d) for i, d, u, v in projected
+                  if np.any((x0 <= u) & (u <= x1) & (y0 <= v) & (v <= y1))]
         expected = obj["category"].replace("_", " ")
-        rows.append({"object": obj["category"], "detected": [d.category for d in inside],
-                     "correct": any(d.category == expected for d in inside)})
+        rows.append({"object": obj["category"], "detected": [d.category for _, d in inside],
+                     "detection_indices": [i for i, _ in inside],
+                     "correct": any(d.category == expected for _, d in inside)})
     return {"boxes": rows}
