@@ -4,15 +4,20 @@ Long-term entities (rooms, walls, doors) come from the world file's floor plan �
 told the layout. Short-term entities (furniture) come from perception: every frame's detections
 are fused into *tracks*, matched by footprint overlap on the world grid. A track keeps, per
 grid cell, how often it was seen there; a category vote weighted by confidence; a
-confidence-weighted circular mean of its orientation. A track the robot looks straight at
+confidence-weighted circular mean of its orientation. A view cut by the image border shows
+part of an item — the end of a couch looks like a chair — so a track's category, facing and
+centre come from its whole views, and from the cut ones only while it has no whole view; and a
+category whose largest model is far smaller than the floor the track covers loses the vote to
+one that can cover it (the couch whose two ends, each seen alone, were read as chairs). A track the robot looks straight at
 (its cells in view) without seeing it loses support and is dropped once it has been missed more
 often than seen: furniture moved without telling the robot disappears from the model. A track's
-position (attributes ``x``, ``y``) is the confidence-weighted mean of the detector's centre
+position (attributes ``x``, ``y``) is the weighted median of the detector's centre
 estimates, which are better than the centroid of the cells seen from one side.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections import defaultdict
 from dataclasses import dataclass, field
@@ -37,7 +42,9 @@ def _largest_footprint_m2(category: str) -> float:
 
 @dataclass(frozen=True)
 class _Seen:
-    """One detection a track absorbed: its cells, weight and what it said."""
+    """One detection a track absorbed: its cells, weight and what it said. ``partial``: the
+    view ran out of the image, so it showed part of the item; ``merged``: a view of this item
+    and another, kept when a track was split — its cells count, its words do not."""
 
     cells: frozenset
     weight: float
@@ -45,20 +52,28 @@ class _Seen:
     orientation: float | None
     subclass: str | None
     xy: tuple[float, float] | None
+    partial: bool = False
+    merged: bool = False
+
+
+@dataclass(frozen=True)
+class _Reading:
+    """What a track's views say of its item: category, subclass, facing (radians or None) and
+    centre (metres, world frame, or None)."""
+
+    category: str
+    subclass: str | None
+    orientation: float | None
+    centre: tuple[float, float] | None
 
 
 @dataclass
 class _Track:
     id: str
     hits: dict = field(default_factory=lambda: defaultdict(float))  # (iy, ix) → weight
-    votes: dict = field(default_factory=lambda: defaultdict(float))  # category → confidence sum
-    sin: float = 0.0
-    cos: float = 0.0
     seen: int = 0
     missed: int = 0
     confidence: float = 0.0
-    subclass: str | None = None
-    position: list = field(default_factory=lambda: [0.0, 0.0, 0.0])  # Σw·x, Σw·y, Σw
     history: list = field(default_factory=list)  # _Seen of every detection absorbed
 
     def cells(self, share: float) -> np.ndarray:
@@ -68,15 +83,24 @@ class _Track:
         top = max(self.hits.values())
         return np.array(sorted(c for c, w in self.hits.items() if w >= share * top), dtype=int)
 
-    @property
-    def category(self) -> str:
-        return max(self.votes.items(), key=lambda kv: kv[1])[0]
 
-    @property
-    def orientation(self) -> float | None:
-        if self.sin == 0.0 and self.cos == 0.0:
-            return None
-        return math.atan2(self.sin, self.cos)
+def _weighted_median(values: np.ndarray, weights: np.ndarray) -> float:
+    """The value at half the total weight (the mean of the two values around it when half
+    falls exactly between them): one glimpse with a centre far off does not move it."""
+    order = np.argsort(values)
+    v, cum = values[order], np.cumsum(weights[order])
+    half = cum[-1] / 2.0
+    i = int(np.searchsorted(cum, half))
+    if i + 1 < len(v) and math.isclose(cum[i], half):
+        return float((v[i] + v[i + 1]) / 2.0)
+    return float(v[i])
+
+
+def _attributes(track: _Track, reading: _Reading) -> dict:
+    out = {"seen": track.seen, "subclass": reading.subclass}
+    if reading.centre is not None:
+        out["x"], out["y"] = reading.centre
+    return out
 
 
 class EnvironmentModel:
@@ -85,9 +109,14 @@ class EnvironmentModel:
     ``update(entities, robot_pose)`` fuses one frame's short-term entities (e.g. from
     :meth:`FurnitureDetector.detect`): each is matched to the track whose footprint it overlaps
     most (intersection over the smaller footprint ≥ ``match_overlap``, or centres nearer than
-    ``match_distance_m``), else starts a new track. A detection of an item with a front that
+    ``match_distance_m``), else starts a new track; a view cut by the image border is matched
+    against the track's *extent*, all cells seen at least ``extent_share`` of its best cell
+    (it shows an item's end, the part seen least), a whole view against its footprint
+    (``cell_share``). A detection of an item with a front that
     covers only part of its track and faces ``split_turn_rad`` or more away from it splits the
-    track in two (two couches in an L that an early view saw as one sample). ``entities()`` gives the long-term entities
+    track in two. A track's category is the vote's winner among the categories whose largest
+    catalogue model covers at least 1/``size_margin`` of the track's extent (the winner of
+    all votes when none does) (two couches in an L that an early view saw as one sample). ``entities()`` gives the long-term entities
     followed by the furniture, named by category word (``table``, ``chair``…), with ids in
     order of first detection.
     """
@@ -96,7 +125,8 @@ class EnvironmentModel:
                  match_distance_m: float = 0.45, cell_share: float = 0.3,
                  view_range_m: float = 4.0, view_half_fov_rad: float = math.radians(26.0),
                  split_turn_rad: float = math.radians(60.0), split_min_area_m2: float = 0.3,
-                 split_min_track_share: float = 1.6, split_max_fill: float = 0.7):
+                 split_min_track_share: float = 1.6, split_max_fill: float = 0.7,
+                 size_margin: float = 2.5, extent_share: float = 0.1):
         self.world = world
         self.grid: GridMap = world_grid(world, resolution_m)
         self.long_term: list[Entity] = floorplan_entities(world, self.grid)
@@ -109,6 +139,8 @@ class EnvironmentModel:
         self.split_min_area_m2 = split_min_area_m2
         self.split_min_track_share = split_min_track_share
         self.split_max_fill = split_max_fill
+        self.size_margin = size_margin
+        self.extent_share = extent_share
         self._tracks: list[_Track] = []
         self._next = 0
         self.frames = 0
@@ -123,7 +155,8 @@ class EnvironmentModel:
             cells = self._cells_of(det)
             if len(cells) == 0:
                 continue
-            track = self._match(cells)
+            partial = bool((det.attributes or {}).get("partial", False))
+            track = self._match(cells, self.extent_share if partial else self.cell_share)
             if track is not None and self._is_another_item(track, det, cells):
                 track = self._split_off(track, cells)
             if track is None:
@@ -150,12 +183,14 @@ class EnvironmentModel:
         cells = cells[self.grid.contains_cells(cells)]
         return np.unique(cells, axis=0) if len(cells) else cells
 
-    def _match(self, cells: np.ndarray) -> _Track | None:
+    def _match(self, cells: np.ndarray, share: float) -> _Track | None:
+        """The track whose cells (seen at least ``share`` of its best cell's weight) the
+        detection's ``cells`` overlap most, or None."""
         best, best_score = None, 0.0
         keys = {tuple(c) for c in cells}
         centre = self.grid.cell_to_world(cells).mean(axis=0)
         for track in self._tracks:
-            tc = track.cells(self.cell_share)
+            tc = track.cells(share)
             if len(tc) == 0:
                 continue
             inter = len(keys & {tuple(c) for c in tc})
@@ -172,7 +207,8 @@ class EnvironmentModel:
         if "x" in det.attributes and "y" in det.attributes:  # the detector's centre estimate
             xy = (float(det.attributes["x"]), float(det.attributes["y"]))
         seen = _Seen(frozenset((int(c[0]), int(c[1])) for c in cells), max(float(det.confidence), 0.05),
-                     det.category or det.name, det.orientation_rad, det.attributes.get("subclass"), xy)
+                     det.category or det.name, det.orientation_rad, det.attributes.get("subclass"), xy,
+                     partial=bool(det.attributes.get("partial", False)))
         self._add(track, seen)
         track.missed = max(0, track.missed - 1)
 
@@ -181,17 +217,9 @@ class EnvironmentModel:
         w = seen.weight
         for c in seen.cells:
             track.hits[c] += w
-        track.votes[seen.category] += w
-        if seen.orientation is not None:
-            track.sin += w * math.sin(seen.orientation)
-            track.cos += w * math.cos(seen.orientation)
-        track.seen += 1
-        track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
-        track.subclass = seen.subclass or track.subclass
-        if seen.xy is not None:
-            track.position[0] += w * seen.xy[0]
-            track.position[1] += w * seen.xy[1]
-            track.position[2] += w
+        if not seen.merged:
+            track.seen += 1
+            track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
         track.history.append(seen)
 
     def _is_another_item(self, track: _Track, det: Entity, cells: np.ndarray) -> bool:
@@ -201,12 +229,17 @@ class EnvironmentModel:
         :attr:`split_turn_rad` away from it, with enough of the track left beside it, on a track
         larger than :attr:`split_min_track_share` times the catalogue's largest item of that
         category (one couch whose front a view got wrong is not split) and filling less than
-        :attr:`split_max_fill` of its best rectangle (an L, not a bed seen in parts)."""
-        if det.orientation_rad is None or track.orientation is None:
+        :attr:`split_max_fill` of its best rectangle (an L, not a bed seen in parts). A view cut by
+        the image border naming a category too small for the track's extent is part of the
+        track's item (a couch's end looks like a chair), not a second item."""
+        reading = self.read(track, whole_first=False)  # every view's say on where it faces
+        if det.orientation_rad is None or reading.orientation is None:
             return False
         if (det.category or det.name) not in FRONT_CATEGORIES:
             return False
-        turn = abs(math.remainder(det.orientation_rad - track.orientation, 2 * math.pi))
+        if det.attributes.get("partial") and not self._fits(det.category or det.name, track):
+            return False
+        turn = abs(math.remainder(det.orientation_rad - reading.orientation, 2 * math.pi))
         if turn < self.split_turn_rad:
             return False
         mine = track.cells(self.cell_share)
@@ -219,6 +252,43 @@ class EnvironmentModel:
         rest = [c for c in map(tuple, mine) if c not in keys]
         return (len(mine) - len(rest) < 0.6 * len(mine)
                 and len(rest) * cell_area >= self.split_min_area_m2)
+
+    def _fits(self, category: str, track: _Track) -> bool:
+        """Whether an item of ``category`` can be as large as the track's extent: its largest
+        catalogue footprint × :attr:`size_margin` is at least the extent's area."""
+        extent_m2 = len(track.cells(self.extent_share)) * self.grid.resolution_m ** 2
+        return extent_m2 <= self.size_margin * _largest_footprint_m2(category)
+
+    def read(self, track: _Track, whole_first: bool = True) -> _Reading:
+        """What the track's views say. The views that voted: the whole ones, or the cut ones
+        while there is no whole one (or, after a split that left only views of both items,
+        those). The category: their weighted vote's winner among the categories that can be as
+        large as the track's extent (:meth:`_fits`), else among all. Facing (circular mean),
+        centre (weighted median of the detector's centre estimates, per axis) and subclass:
+        from every view, whole or cut, that named that category, by weight. ``whole_first=False``: every view votes alike (for the split, which asks whether
+        a new view faces away from what the track's views said so far)."""
+        spoke = [s for s in track.history if not s.merged]
+        views = spoke
+        if whole_first:
+            views = [s for s in views if not s.partial] or views
+        views = views or track.history
+        votes: dict = defaultdict(float)
+        for seen in views:
+            votes[seen.category] += seen.weight
+        fits = {c: w for c, w in votes.items() if self._fits(c, track)}
+        category = max((fits or votes).items(), key=lambda kv: kv[1])[0]
+        named = [s for s in spoke if s.category == category]
+        sin = sum(s.weight * math.sin(s.orientation) for s in named if s.orientation is not None)
+        cos = sum(s.weight * math.cos(s.orientation) for s in named if s.orientation is not None)
+        placed = [s for s in named if s.xy is not None]
+        centre = None
+        if placed:
+            w = np.array([s.weight for s in placed])
+            xy = np.array([s.xy for s in placed])
+            centre = (_weighted_median(xy[:, 0], w), _weighted_median(xy[:, 1], w))
+        subclass = next((s.subclass for s in reversed(named) if s.subclass), None)
+        return _Reading(category, subclass, None if sin == 0.0 and cos == 0.0 else math.atan2(sin, cos),
+                        centre)
 
     def _split_off(self, track: _Track, cells: np.ndarray) -> _Track:
         """Split ``track`` in two along ``cells`` (the second item's): the detections that lay
@@ -235,12 +305,9 @@ class EnvironmentModel:
                 self._add(new, seen)
             elif on <= 0.2:
                 self._add(stay, seen)
-            else:  # a view of both: its cells off the new item's stay, its words are dropped
-                for c in seen.cells - keys:
-                    stay.hits[c] += seen.weight
-        if not stay.votes:  # only merged views so far: keep the category they voted for
-            for seen in track.history:
-                stay.votes[seen.category] += seen.weight
+            else:  # a view of both: its cells off the new item's stay, its words only count
+                # while the track has no other view (``read``)
+                self._add(stay, dataclasses.replace(seen, cells=seen.cells - keys, merged=True))
         return new
 
     def _new_track(self) -> _Track:
@@ -270,21 +337,14 @@ class EnvironmentModel:
             cells = track.cells(self.cell_share)
             if len(cells) == 0:
                 continue
-            category = track.category
+            reading = self.read(track)
+            category = reading.category
             has_front = category in ("chair", "couch", "bed")
             room = self.world.floorplan.room_at(*self.grid.cell_to_world(cells).mean(axis=0))
             out.append(Entity(track.id, category_word(category), EntityKind.SHORT_TERM, self.grid,
-                              cells, track.orientation if has_front else None, category=category,
+                              cells, reading.orientation if has_front else None, category=category,
                               room=room.name if room else None, confidence=track.confidence,
-                              attributes=self._attributes(track)))
-        return out
-
-    @staticmethod
-    def _attributes(track: _Track) -> dict:
-        out = {"seen": track.seen, "subclass": track.subclass}
-        if track.position[2] > 0:
-            out["x"] = track.position[0] / track.position[2]
-            out["y"] = track.position[1] / track.position[2]
+                              attributes=_attributes(track, reading)))
         return out
 
     def entities(self, robot_pose: Pose2D | None = None) -> list[Entity]:

@@ -94,3 +94,64 @@ def test_a_bed_seen_in_parts_with_one_front_wrong_stays_one_bed(apartment):
     # a view of its head end read as a couch facing sideways: not a second item
     model.update([seen(model, 5.0, -2.3, 1.2, 0.8, "couch", 0.0)])
     assert len(model.furniture()) == 1
+
+
+def cut(model, x, y, length, width, category, facing=None, confidence=0.5, centre=None):
+    """A detection whose view ran out of the image (``partial``), with the detector's centre."""
+    e = seen(model, x, y, length, width, category, facing, confidence)
+    cx, cy = centre or (x, y)
+    e.attributes.update({"partial": True, "x": cx, "y": cy})
+    return e
+
+
+def test_a_couchs_ends_seen_alone_do_not_make_it_two_chairs(apartment):
+    """The apartment couch (2 m) behind the coffee table: every view is cut by the image border;
+    the two ends, each seen alone, look like chairs and are read as chairs with more weight
+    than the couch views. The couch stays one couch, centred and facing by its couch views."""
+    model = EnvironmentModel(apartment)
+    model.update([cut(model, 4.5, 3.0, 2.0, 0.8, "couch", math.pi / 2, 0.17, centre=(4.5, 3.0))])
+    model.update([cut(model, 4.5, 3.0, 2.0, 0.8, "couch", math.pi / 2, 0.17, centre=(4.45, 3.0))])
+    for _ in range(3):  # the left end, as a chair facing away, again and again
+        model.update([cut(model, 3.85, 3.05, 0.7, 0.7, "chair", -math.pi / 2, 0.49)])
+    model.update([cut(model, 5.2, 3.05, 0.7, 0.7, "chair", -math.pi / 2, 0.49)])  # the right end
+    furniture = model.furniture()
+    assert [e.category for e in furniture] == ["couch"]
+    couch = furniture[0]
+    assert couch.attributes["x"] == pytest.approx(4.475, abs=0.01)  # the couch views' centres
+    assert couch.orientation_rad == pytest.approx(math.pi / 2, abs=0.01)
+
+
+def test_a_whole_view_outvotes_cut_views_and_a_small_track_stays_a_chair(apartment):
+    model = EnvironmentModel(apartment)
+    model.update([cut(model, 4.5, 5.0, 0.6, 0.6, "small table", None, 0.6)])
+    model.update([seen(model, 4.5, 5.0, 0.6, 0.6, "chair", 0.0, 0.3)])  # the one whole view
+    assert [e.category for e in model.furniture()] == ["chair"]
+    # a chair-sized track that only chair and couch views saw stays what most said
+    other = EnvironmentModel(apartment)
+    other.update([seen(other, 4.5, 5.0, 0.6, 0.6, "chair", 0.0, 0.8)])
+    other.update([seen(other, 4.5, 5.0, 0.6, 0.6, "couch", 0.0, 0.5)])
+    assert [e.category for e in other.furniture()] == ["chair"]
+
+
+def test_a_category_too_small_for_the_floor_a_track_covers_loses_the_vote(apartment):
+    model = EnvironmentModel(apartment)
+    model.update([seen(model, 4.5, 3.0, 2.0, 0.9, "chair", 0.0, 0.9)])   # 1.8 m²: no chair is that big
+    model.update([seen(model, 4.5, 3.0, 2.0, 0.9, "couch", 0.0, 0.5)])
+    assert [e.category for e in model.furniture()] == ["couch"]
+    lone = EnvironmentModel(apartment)  # with nothing else said, the vote stands
+    lone.update([seen(lone, 4.5, 3.0, 2.0, 0.9, "chair", 0.0, 0.9)])
+    assert [e.category for e in lone.furniture()] == ["chair"]
+
+
+def test_two_couches_in_an_l_split_when_the_views_of_each_are_cut_by_the_image_border(apartment):
+    """As in the two-bedroom house: the first view of the L and every later view of each couch
+    run out of the image."""
+    model = EnvironmentModel(apartment)
+    first = _l_view(model, confidence=0.45)
+    first.attributes["partial"] = True
+    model.update([first])
+    model.update([cut(model, 4.0, 3.0, 2.0, 0.8, "couch", math.pi / 2, 0.45)])
+    model.update([cut(model, 5.4, 4.4, 0.8, 2.0, "couch", math.pi, 0.45)])
+    couches = sorted(model.furniture(), key=lambda e: e.centroid_m[0])
+    assert [e.category for e in couches] == ["couch", "couch"]
+    assert couches[0].orientation_rad == pytest.approx(math.pi / 2, abs=0.05)
