@@ -237,7 +237,8 @@ class EnvironmentModel:
             return False
         if (det.category or det.name) not in FRONT_CATEGORIES:
             return False
-        if det.attributes.get("partial") and not self._fits(det.category or det.name, track):
+        if det.attributes.get("partial") and not self._fits(det.category or det.name,
+                                                            self._extent_m2(track)):
             return False
         turn = abs(math.remainder(det.orientation_rad - reading.orientation, 2 * math.pi))
         if turn < self.split_turn_rad:
@@ -253,10 +254,14 @@ class EnvironmentModel:
         return (len(mine) - len(rest) < 0.6 * len(mine)
                 and len(rest) * cell_area >= self.split_min_area_m2)
 
-    def _fits(self, category: str, track: _Track) -> bool:
-        """Whether an item of ``category`` can be as large as the track's extent: its largest
-        catalogue footprint × :attr:`size_margin` is at least the extent's area."""
-        extent_m2 = len(track.cells(self.extent_share)) * self.grid.resolution_m ** 2
+    def _extent_m2(self, track: _Track) -> float:
+        """Area (m²) of the track's extent: the cells seen at least :attr:`extent_share` of its
+        best cell's weight."""
+        return len(track.cells(self.extent_share)) * self.grid.resolution_m ** 2
+
+    def _fits(self, category: str, extent_m2: float) -> bool:
+        """Whether an item of ``category`` can be as large as a track's extent (m²): its largest
+        catalogue footprint × :attr:`size_margin` is at least that."""
         return extent_m2 <= self.size_margin * _largest_footprint_m2(category)
 
     def read(self, track: _Track, whole_first: bool = True) -> _Reading:
@@ -275,7 +280,8 @@ class EnvironmentModel:
         votes: dict = defaultdict(float)
         for seen in views:
             votes[seen.category] += seen.weight
-        fits = {c: w for c, w in votes.items() if self._fits(c, track)}
+        extent_m2 = self._extent_m2(track)
+        fits = {c: w for c, w in votes.items() if self._fits(c, extent_m2)}
         category = max((fits or votes).items(), key=lambda kv: kv[1])[0]
         named = [s for s in spoke if s.category == category]
         sin = sum(s.weight * math.sin(s.orientation) for s in named if s.orientation is not None)

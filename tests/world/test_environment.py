@@ -155,3 +155,12 @@ def test_two_couches_in_an_l_split_when_the_views_of_each_are_cut_by_the_image_b
     couches = sorted(model.furniture(), key=lambda e: e.centroid_m[0])
     assert [e.category for e in couches] == ["couch", "couch"]
     assert couches[0].orientation_rad == pytest.approx(math.pi / 2, abs=0.05)
+
+
+def test_the_weighted_median_ignores_one_glimpse_far_off():
+    from assistant.world.environment import _weighted_median
+
+    values, weights = np.array([2.94, 2.07, 1.96, 2.21]), np.array([0.17, 0.64, 0.4, 0.37])
+    assert _weighted_median(values, weights) == pytest.approx(2.07)
+    assert _weighted_median(np.array([1.0, 3.0]), np.array([1.0, 1.0])) == pytest.approx(2.0)
+    assert _weighted_median(np.array([5.0]), np.array([0.2])) == 5.0
