@@ -5,10 +5,10 @@ told the layout. Short-term entities (furniture) come from perception: every fra
 are fused into *tracks*, matched by footprint overlap on the world grid. A track keeps, per
 grid cell, how often it was seen there; a category vote weighted by confidence; a
 confidence-weighted circular mean of its orientation. A view cut by the image border shows
-part of an item — the end of a couch looks like a chair — so a track's category, facing and
-centre come from its whole views, and from the cut ones only while it has no whole view; and a
-category whose largest model is far smaller than the floor the track covers loses the vote to
-one that can cover it (the couch whose two ends, each seen alone, were read as chairs). A track the robot looks straight at
+part of an item — the end of a couch looks like a chair — so a category whose largest model is
+far smaller than the floor the track covers loses the vote to one that can cover it (the couch
+whose two ends, each seen alone, were read as chairs), and facing and centre come from the
+views that named the track's category. A track the robot looks straight at
 (its cells in view) without seeing it loses support and is dropped once it has been missed more
 often than seen: furniture moved without telling the robot disappears from the model. A track's
 position (attributes ``x``, ``y``) is the weighted median of the detector's centre
@@ -232,7 +232,7 @@ class EnvironmentModel:
         :attr:`split_max_fill` of its best rectangle (an L, not a bed seen in parts). A view cut by
         the image border naming a category too small for the track's extent is part of the
         track's item (a couch's end looks like a chair), not a second item."""
-        reading = self.read(track, whole_first=False)  # every view's say on where it faces
+        reading = self.read(track)
         if det.orientation_rad is None or reading.orientation is None:
             return False
         if (det.category or det.name) not in FRONT_CATEGORIES:
@@ -264,19 +264,14 @@ class EnvironmentModel:
         catalogue footprint × :attr:`size_margin` is at least that."""
         return extent_m2 <= self.size_margin * _largest_footprint_m2(category)
 
-    def read(self, track: _Track, whole_first: bool = True) -> _Reading:
-        """What the track's views say. The views that voted: the whole ones, or the cut ones
-        while there is no whole one (or, after a split that left only views of both items,
-        those). The category: their weighted vote's winner among the categories that can be as
-        large as the track's extent (:meth:`_fits`), else among all. Facing (circular mean),
-        centre (weighted median of the detector's centre estimates, per axis) and subclass:
-        from every view, whole or cut, that named that category, by weight. ``whole_first=False``: every view votes alike (for the split, which asks whether
-        a new view faces away from what the track's views said so far)."""
+    def read(self, track: _Track) -> _Reading:
+        """What the track's views say. The category: the weighted vote of its views (of the
+        views of both items after a split, while it has no other), won by the categories that
+        can be as large as the track's extent (:meth:`_fits`) — else by all. Facing (circular
+        mean), centre (weighted median of the detector's centre estimates, per axis) and
+        subclass: from the views that named that category, by weight."""
         spoke = [s for s in track.history if not s.merged]
-        views = spoke
-        if whole_first:
-            views = [s for s in views if not s.partial] or views
-        views = views or track.history
+        views = spoke or track.history
         votes: dict = defaultdict(float)
         for seen in views:
             votes[seen.category] += seen.weight
