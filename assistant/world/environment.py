@@ -75,6 +75,7 @@ class _Track:
     missed: int = 0
     confidence: float = 0.0
     history: list = field(default_factory=list)  # _Seen of every detection absorbed
+    reading: _Reading | None = None  # what ``EnvironmentModel.read`` made of it; None: stale
 
     def cells(self, share: float) -> np.ndarray:
         """Cells seen in at least ``share`` of the best cell's weight."""
@@ -96,6 +97,11 @@ def _weighted_median(values: np.ndarray, weights: np.ndarray) -> float:
     return float(v[i])
 
 
+def _cut(det: Entity) -> bool:
+    """Whether a detection's view ran out of the image (the detector's ``partial``)."""
+    return bool(det.attributes.get("partial", False))
+
+
 def _attributes(track: _Track, reading: _Reading) -> dict:
     out = {"seen": track.seen, "subclass": reading.subclass}
     if reading.centre is not None:
@@ -112,12 +118,12 @@ class EnvironmentModel:
     ``match_distance_m``), else starts a new track; a view cut by the image border is matched
     against the track's *extent*, all cells seen at least ``extent_share`` of its best cell
     (it shows an item's end, the part seen least), a whole view against its footprint
-    (``cell_share``). A detection of an item with a front that
-    covers only part of its track and faces ``split_turn_rad`` or more away from it splits the
-    track in two. A track's category is the vote's winner among the categories whose largest
-    catalogue model covers at least 1/``size_margin`` of the track's extent (the winner of
-    all votes when none does) (two couches in an L that an early view saw as one sample). ``entities()`` gives the long-term entities
-    followed by the furniture, named by category word (``table``, ``chair``…), with ids in
+    (``cell_share``). A detection of an item with a front that covers only part of its track
+    and faces ``split_turn_rad`` or more away from it splits the track in two (two couches in
+    an L that an early view saw as one sample). A track's category is the vote's winner among
+    the categories whose largest catalogue model covers at least 1/``size_margin`` of the
+    track's extent (the winner of all votes when none does). ``entities()`` gives the
+    long-term entities followed by the furniture, named by category word (``table``, ``chair``…), with ids in
     order of first detection.
     """
 
@@ -155,8 +161,7 @@ class EnvironmentModel:
             cells = self._cells_of(det)
             if len(cells) == 0:
                 continue
-            partial = bool((det.attributes or {}).get("partial", False))
-            track = self._match(cells, self.extent_share if partial else self.cell_share)
+            track = self._match(cells, self.extent_share if _cut(det) else self.cell_share)
             if track is not None and self._is_another_item(track, det, cells):
                 track = self._split_off(track, cells)
             if track is None:
@@ -208,7 +213,7 @@ class EnvironmentModel:
             xy = (float(det.attributes["x"]), float(det.attributes["y"]))
         seen = _Seen(frozenset((int(c[0]), int(c[1])) for c in cells), max(float(det.confidence), 0.05),
                      det.category or det.name, det.orientation_rad, det.attributes.get("subclass"), xy,
-                     partial=bool(det.attributes.get("partial", False)))
+                     partial=_cut(det))
         self._add(track, seen)
         track.missed = max(0, track.missed - 1)
 
@@ -221,6 +226,7 @@ class EnvironmentModel:
             track.seen += 1
             track.confidence = 1.0 - (1.0 - track.confidence) * (1.0 - min(w, 0.95))
         track.history.append(seen)
+        track.reading = None
 
     def _is_another_item(self, track: _Track, det: Entity, cells: np.ndarray) -> bool:
         """Whether a detection that overlaps ``track`` is a second item the track has merged
@@ -237,8 +243,7 @@ class EnvironmentModel:
             return False
         if (det.category or det.name) not in FRONT_CATEGORIES:
             return False
-        if det.attributes.get("partial") and not self._fits(det.category or det.name,
-                                                            self._extent_m2(track)):
+        if _cut(det) and not self._fits(det.category or det.name, self._extent_m2(track)):
             return False
         turn = abs(math.remainder(det.orientation_rad - reading.orientation, 2 * math.pi))
         if turn < self.split_turn_rad:
@@ -269,7 +274,13 @@ class EnvironmentModel:
         views of both items after a split, while it has no other), won by the categories that
         can be as large as the track's extent (:meth:`_fits`) — else by all. Facing (circular
         mean), centre (weighted median of the detector's centre estimates, per axis) and
-        subclass: from the views that named that category, by weight."""
+        subclass: from the views that named that category, by weight. Kept on the track until
+        it absorbs another view (every frame reads every track)."""
+        if track.reading is None:
+            track.reading = self._reading(track)
+        return track.reading
+
+    def _reading(self, track: _Track) -> _Reading:
         spoke = [s for s in track.history if not s.merged]
         views = spoke or track.history
         votes: dict = defaultdict(float)
@@ -340,7 +351,7 @@ class EnvironmentModel:
                 continue
             reading = self.read(track)
             category = reading.category
-            has_front = category in ("chair", "couch", "bed")
+            has_front = category in FRONT_CATEGORIES
             room = self.world.floorplan.room_at(*self.grid.cell_to_world(cells).mean(axis=0))
             out.append(Entity(track.id, category_word(category), EntityKind.SHORT_TERM, self.grid,
                               cells, reading.orientation if has_front else None, category=category,
