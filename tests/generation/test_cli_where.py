@@ -19,6 +19,15 @@ def _run(argv, capsys):
     return code, capsys.readouterr().out
 
 
+def _run_batch(requests, tmp_path, capsys):
+    """``assistant where --batch FILE --search oracle`` on these request lines: the exit
+    status and one parsed JSON object per output line."""
+    batch = tmp_path / "req.jsonl"
+    batch.write_text("".join(line + "\n" for line in requests))
+    code, out = _run(["--batch", str(batch), "--search", "oracle"], capsys)
+    return code, [json.loads(x) for x in out.splitlines()]
+
+
 def test_json_answer_has_the_contract_fields(capsys, generation_model):
     code, out = _run(["mug", "--world", "apartment", "--search", "oracle", "--json"], capsys)
     data = json.loads(out)
@@ -31,12 +40,10 @@ def test_json_answer_has_the_contract_fields(capsys, generation_model):
 
 
 def test_batch_goes_on_after_a_bad_line(tmp_path, capsys, generation_model):
-    batch = tmp_path / "req.jsonl"
-    batch.write_text('{"object": "fork", "world": "hk-studio", "scene": "modified"}\n'
-                     '{"object": "stapler", "world": "apartment"}\n'
-                     '{"object": "mug", "world": "apartment", "question": "how do I get to my mug"}\n')
-    code, out = _run(["--batch", str(batch), "--search", "oracle"], capsys)
-    lines = [json.loads(x) for x in out.splitlines()]
+    code, lines = _run_batch(['{"object": "fork", "world": "hk-studio", "scene": "modified"}',
+                              '{"object": "stapler", "world": "apartment"}',
+                              '{"object": "mug", "world": "apartment", "question": "how do I get to my mug"}'],
+                             tmp_path, capsys)
     assert code == 0 and len(lines) == 3
     assert lines[0]["found"] and "fork" in lines[0]["description"]
     assert "error" in lines[1] and "glasses case" in lines[1]["error"]
@@ -68,12 +75,9 @@ def test_unknown_search_mode_is_an_error(capsys):
 
 
 def test_a_bad_pose_or_miss_rate_is_a_message_not_a_traceback(tmp_path, capsys, generation_model):
-    batch = tmp_path / "req.jsonl"
-    batch.write_text('{"object": "mug", "world": "apartment", "listener": "a,b"}\n'
-                     '{"object": "mug", "world": "apartment", "miss_rate": "often"}\n'
-                     '{"object": "mug", "world": "apartment"}\n')
-    code, out = _run(["--batch", str(batch), "--search", "oracle"], capsys)
-    lines = [json.loads(x) for x in out.splitlines()]
+    code, lines = _run_batch(['{"object": "mug", "world": "apartment", "listener": "a,b"}',
+                              '{"object": "mug", "world": "apartment", "miss_rate": "often"}',
+                              '{"object": "mug", "world": "apartment"}'], tmp_path, capsys)
     assert code == 0 and len(lines) == 3
     assert "X,Y,HEADING" in lines[0]["error"] and "often" in lines[1]["error"]
     assert lines[2]["found"]
