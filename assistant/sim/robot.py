@@ -17,7 +17,7 @@ from assistant.sim.kinematics import DiffDriveBase, DiffDriveLimits, OdometryNoi
 from assistant.sim.renderer import DepthRenderer, KinectNoise
 from assistant.world import World, load_world
 
-__all__ = ["SimRobot"]
+__all__ = ["SimRobot", "sim_robot_from_spec"]
 
 
 class SimRobot(Robot):
@@ -115,3 +115,19 @@ class SimRobot(Robot):
     def bumped_into(self) -> str | None:
         """What the base bumped into (``wall_<k>``, a furniture id, ``map edge``), or None."""
         return self.base.bumped_into
+
+
+def sim_robot_from_spec(argument: str = "", *, world: World | str | None = None,
+                        scene: str | None = None, noise: bool = False, **options) -> SimRobot:
+    """The ``sim`` adapter of :func:`assistant.robot.factory.make_robot`.
+
+    ``argument`` is ``""``, ``WORLD`` or ``WORLD:SCENE``; it wins over the ``world`` and
+    ``scene`` options. ``noise=True`` turns on the default odometry noise (the evaluations'
+    setting) unless ``odometry_noise`` is given. Other options go to :class:`SimRobot`.
+    """
+    name, _, scene_arg = argument.partition(":")
+    chosen_world = name or world or "apartment"
+    chosen_scene = scene_arg or scene or "original"
+    if noise and "odometry_noise" not in options:
+        options["odometry_noise"] = OdometryNoise()
+    return SimRobot(chosen_world, chosen_scene, **options)
