@@ -38,6 +38,7 @@ import time
 from dataclasses import dataclass
 
 from assistant.eval.progress import Progress, no_progress
+from assistant.world import load_catalogue
 
 STUDY_WORLDS = ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house")
 SCENES = ("original", "modified")
@@ -261,7 +262,7 @@ def _stated(result, parser, obj, meant) -> tuple:
         return plan.room, plan.object, (plan.nodes[-1].target if plan.nodes else None), rdts
     room = next((n.words["room"] for n in result.selected if n.kind == "room"), None)
     support = next((n.words.get("support") for n in result.selected if n.kind == "support"), None)
-    if support in SIZE_WORDS:  # "end table" is a table
+    if support in _size_words():  # "end table" is a table
         support = "table"
     return room, obj.name, support, [RDT.parse(r) for r in sorted(meant)]
 
@@ -407,13 +408,16 @@ def summarise(rows: list[dict], tools: _Tools, search: str, listener_perception:
     }
 
 
-#: support words the generator may use for size, and the catalogue category each one claims
-SIZE_WORDS = {"desk": "large table", "nightstand": "small table", "end table": "small table"}
+def _size_words() -> dict[str, str]:
+    """Table words that claim one size (``desk`` → large table), from the catalogue."""
+    catalogue = load_catalogue()
+    return {w: c for w in catalogue.words.furniture
+            if (c := catalogue.suggested_category(w)) in ("small table", "large table")}
 
 
 def _said_support_word(text: str) -> str | None:
     t = " ".join(text.lower().split())
-    for word in SIZE_WORDS:
+    for word in _size_words():
         if f"the {word}" in t:
             return word
     return None
@@ -423,11 +427,11 @@ def _support_size_problem(text: str, support) -> str | None:
     word = _said_support_word(text)
     if word is None:
         return None
-    if support.category != SIZE_WORDS[word]:
+    if support.category != _size_words()[word]:
         return f"said {word!r} for a {support.category}"
     return None
 
 
 def _size_rules_out(text: str, item) -> bool:
     word = _said_support_word(text)
-    return word is not None and item.category != SIZE_WORDS[word]
+    return word is not None and item.category != _size_words()[word]
