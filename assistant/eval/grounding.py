@@ -29,8 +29,10 @@ CSISL_WORLD = "apartment"
 
 
 def default_test_path() -> Path | None:
-    shared = Path(__file__).resolve().parents[3] / "shared" / "realdata" / "csisl"
-    path = shared / "csisl_templates149_chunk_groundings.csv"
+    """The CSISL template chunk labels, when they are there."""
+    from assistant.eval.csisl import csisl_folder
+
+    path = csisl_folder() / "csisl_templates149_chunk_groundings.csv"
     return path if path.exists() else None
 
 

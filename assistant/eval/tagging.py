@@ -26,9 +26,10 @@ CSISL_FILES = ("csisl_real_descriptions_annotated.xml", "csisl_templates149_anno
 
 
 def default_test_paths() -> list[Path]:
-    from assistant.language.corpus import repo_root
+    """The CSISL real descriptions and templates, those of them that are there."""
+    from assistant.eval.csisl import csisl_folder
 
-    folder = repo_root().parent / "shared" / "realdata" / "csisl"
+    folder = csisl_folder()
     return [folder / name for name in CSISL_FILES if (folder / name).exists()]
 
 
