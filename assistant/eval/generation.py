@@ -290,7 +290,7 @@ def _truth(result, stated, case, support, room, heading, said_room) -> tuple[lis
 
 def _singles_out(result, rdts, case, support, room, said_room, listener_pose) -> bool:
     """Whether the stated room and relations hold for no other furniture with the support's word."""
-    from assistant.generation.content import entry_heading
+    from assistant.generation.entry import entry_heading
 
     env, floorplan, text = case.environment, case.world.floorplan, result.description
     same = [e for e in env if e is not support and e.name == support.name
@@ -325,7 +325,8 @@ def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") 
     described from the finished search ``found`` (``None``: from the world file), its truth,
     uniqueness, listener fetch, brevity and agreement with people."""
     from assistant.generation import repeated_phrases
-    from assistant.generation.content import entry_heading, support_of
+    from assistant.generation.content import support_of
+    from assistant.generation.entry import entry_heading
 
     # ground truth (evaluation only): the object's true support and the true furniture
     support = support_of(case.sighting, case.environment)
