@@ -25,6 +25,7 @@ class ExecutionStatus(str, Enum):
     COLLISION = "collision"  # the robot bumped, or stopped because its path ahead is blocked
     NOT_VISIBLE = "not_visible"  # arrived, but the target is not in the camera's view
     AMBIGUOUS = "ambiguous"  # several things fit the description equally well
+    NOT_FOUND = "not_found"  # a search looked everywhere it could and did not see the object
     TIMEOUT = "timeout"  # the time or step budget of a motion ran out
 
 

@@ -31,9 +31,10 @@ from typing import Callable
 
 import numpy as np
 
+from assistant.generation.route import entry_heading
 from assistant.generation.types import ContentNode
 
-__all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
+__all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "objective_values",
            "select_content", "support_of", "wall_band"]
 
 ALPHA = 0.1
@@ -90,7 +91,7 @@ def support_of(sighting, furniture: list) -> object | None:
     """The furniture entity the object lies on: the one whose footprint is nearest to the
     object's position (within 0.5 m), preferring its room."""
     best, best_d = None, 0.5
-    p = np.array([sighting.x, sighting.y])
+    p = np.array([sighting.x_m, sighting.y_m])
     for ent in furniture:
         if not len(ent.cells):
             continue
@@ -100,39 +101,6 @@ def support_of(sighting, furniture: list) -> object | None:
         if d < best_d:
             best, best_d = ent, d
     return best
-
-
-def entry_heading(floorplan, room: str, listener_pose=None) -> float | None:
-    """The heading (radians) of a person entering ``room``: through the door (or open-plan
-    opening, :attr:`~assistant.world.Floorplan.openings`) on the way from the listener (if
-    given and elsewhere), else the room's first door; the listener's own heading when they
-    are already inside; None when it cannot be told."""
-    r = floorplan.room(room)
-    if listener_pose is not None and r.contains(listener_pose.x, listener_pose.y):
-        return float(listener_pose.theta)
-    doors = floorplan.passages_of(room)  # doors, and open-plan openings: how a person walks in
-    if listener_pose is not None and doors:
-        from assistant.generation.route import room_path
-
-        path = room_path(floorplan, listener_pose, room)
-        if path and len(path) >= 2:
-            prev = path[-2]
-            doors = [d for d in doors if prev in d.connects] or doors
-    doors = [d for d in doors if all(c in floorplan.room_names for c in d.connects)] or doors
-    if not doors:
-        return None
-    return inward_heading(r, doors[0].centre)
-
-
-def inward_heading(room, point) -> float:
-    """Heading perpendicular to the room's nearest bounding-box side at ``point``, pointing in."""
-    poly = room.polygon_array
-    xmin, ymin = poly.min(axis=0)
-    xmax, ymax = poly.max(axis=0)
-    x, y = point
-    sides = {0.0: abs(x - xmin), math.pi: abs(x - xmax), math.pi / 2: abs(y - ymin),
-             -math.pi / 2: abs(y - ymax)}
-    return min(sides, key=sides.get)
 
 
 def room_depth(room, heading: float, point) -> float:

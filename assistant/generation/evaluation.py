@@ -1,7 +1,7 @@
 """``assistant eval generation``: Table 6-1 of the dissertation, reproduced on this product.
 
 The 24 objects of the four study homes in both scenes (48 descriptions). For each, the simulated
-robot first *searches* the home from the world's start pose (:mod:`assistant.generation.search`:
+robot first *searches* the home from the world's start pose (:mod:`assistant.executor.search`:
 room by room, furniture perceived from depth, the object seen by the simulator's object
 detector), and the description is composed from the environment model that search built
 (``--search oracle``: the world file's object position and furniture instead). Search success
@@ -183,7 +183,8 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
     scene, object) → SearchResult``) reuses finished searches instead of searching again."""
     from assistant.errors import AssistantError
     from assistant.generation import Describer, load_generation_model, oracle_cases, repeated_phrases
-    from assistant.generation.content import entry_heading, support_of
+    from assistant.generation.content import support_of
+    from assistant.generation.route import entry_heading
     from assistant.grounding.types import RDT
 
     describer = Describer(load_generation_model(corpus_paths), policies="default" if policies else None)
@@ -223,7 +224,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         heading = entry_heading(world.floorplan, room.name, listener_pose)
         search_row = None
         if search == "sensed":
-            from assistant.generation.search import search_for
+            from assistant.executor.search import search_for
 
             found = (searches or {}).get((wname, scene, obj.name))
             if found is None:
@@ -233,13 +234,13 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
             t0 = time.perf_counter()
             result = describer.describe_search(found, world.floorplan, listener_pose=listener_pose)
             compose_ms = (time.perf_counter() - t0) * 1000
-            error_m = (math.hypot(found.sighting.x - obj.x, found.sighting.y - obj.y)
+            error_m = (math.hypot(found.sighting.x_m - obj.x, found.sighting.y_m - obj.y)
                        if found.found else None)
             right_place = bool(found.found and found.sighting.room == room.name and error_m <= 0.3)
             search_row = {"found": found.found, "right_place": right_place,
                           "position_error_m": None if error_m is None else round(error_m, 3),
                           "room_seen": found.sighting.room if found.found else None,
-                          "support_perceived": found.placed.furniture_category if found.placed else None,
+                          "support_perceived": found.sighting.furniture_category if found.sighting else None,
                           "rooms_searched": found.rooms_searched, "path_m": round(found.path_m, 2),
                           "sim_seconds": round(found.sim_seconds, 1),
                           "wall_seconds": round(found.wall_seconds, 2),
