@@ -138,12 +138,12 @@ def _pose(p) -> list[float]:
 
 def _drive(world, scene, start, goal):
     from assistant.executor import Navigator, build_occupancy
-    from assistant.sim import SimRobot
+    from assistant.robot import make_robot
     from assistant.world import furniture_entities, world_grid
 
     grid = world_grid(world, 0.05)
     occupancy = build_occupancy(world, furniture_entities(world, scene, grid), grid=grid)
-    robot = SimRobot(world, scene, start=start, seed=0)
+    robot = make_robot("sim", world=world, scene=scene, start=start, seed=0)
     robot.connect()
     try:
         result = Navigator(world, lambda: occupancy).go_to(robot, (goal.x, goal.y), goal.theta)
