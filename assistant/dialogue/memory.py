@@ -25,8 +25,9 @@ READABLE_VERSIONS = (1, 2)
 
 
 @dataclass
-class Sighting:
-    """One remembered object: ``time_s`` is seconds since the epoch."""
+class MemoryEntry:
+    """What memory holds about one object: where it was last seen (room, furniture, phrase,
+    position) and when (``time_s``: seconds since the epoch), by which task (``source``)."""
 
     object: str
     world: str
@@ -77,7 +78,7 @@ class ObjectMemory:
         self.path = None if path is None else Path(path)
         self.clock = clock
         self.load_problem: str | None = None
-        self._items: dict[tuple[str, str], Sighting] = {}
+        self._items: dict[tuple[str, str], MemoryEntry] = {}
         self._lock = threading.Lock()
         if self.path is not None and self.path.exists():
             self._load()
@@ -92,7 +93,7 @@ class ObjectMemory:
                 raise ValueError("sightings: expected a list")
             for i, item in enumerate(sightings):
                 try:
-                    s = Sighting(**item)
+                    s = MemoryEntry(**item)
                     s.time_s = float(s.time_s)
                     s.x_m = None if s.x_m is None else float(s.x_m)
                     s.y_m = None if s.y_m is None else float(s.y_m)
@@ -129,10 +130,10 @@ class ObjectMemory:
     def remember(self, world: str, name: str, room: str | None, furniture: str | None = None,
                  furniture_word: str | None = None, phrase: str | None = None,
                  time_s: float | None = None, source: str = "fetch", x_m: float | None = None,
-                 y_m: float | None = None, save: bool = True) -> Sighting:
+                 y_m: float | None = None, save: bool = True) -> MemoryEntry:
         """Store (or replace) where ``name`` was seen, and save (unless ``save`` is False:
         several changes, then one :meth:`save`)."""
-        s = Sighting(name, world, room, furniture, furniture_word, phrase,
+        s = MemoryEntry(name, world, room, furniture, furniture_word, phrase,
                      self.clock() if time_s is None else float(time_s), source,
                      None if x_m is None else round(float(x_m), 3), None if y_m is None else round(float(y_m), 3))
         with self._lock:
@@ -141,7 +142,7 @@ class ObjectMemory:
             self.save()
         return s
 
-    def recall(self, world: str, name: str) -> Sighting | None:
+    def recall(self, world: str, name: str) -> MemoryEntry | None:
         with self._lock:
             return self._items.get((world, name))
 
@@ -150,9 +151,9 @@ class ObjectMemory:
             self._items.pop((world, name), None)
         self.save()
 
-    def sightings(self, world: str | None = None) -> list[Sighting]:
+    def sightings(self, world: str | None = None) -> list[MemoryEntry]:
         with self._lock:
             return [s for s in self._items.values() if world is None or s.world == world]
 
-    def age(self, sighting: Sighting) -> str:
+    def age(self, sighting: MemoryEntry) -> str:
         return age_phrase(self.clock() - sighting.time_s)

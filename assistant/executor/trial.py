@@ -110,10 +110,12 @@ class FetchRunner:
             seed: int = 0, object_name: str | None = None, on_event=None) -> TrialOutcome:
         """One fetch; ``object_name`` overrides the plan's object for evaluation (the dev set
         says which object the command is about)."""
-        from assistant.executor.fetch import FetchResult, FetchTask
+        from assistant.executor.context import TaskContext
+        from assistant.executor.fetch import FetchTask
         from assistant.executor.outcome import ExecutionStatus
         from assistant.executor.sensing import make_furniture_source
-        from assistant.sim import OdometryNoise, SimRobot
+        from assistant.perception.objects import SimObjectDetector
+        from assistant.robot import make_robot
         from assistant.world import load_world
 
         start = time.perf_counter()
@@ -123,13 +125,11 @@ class FetchRunner:
         plan = parsed.plan
         source = make_furniture_source(perception, w, scene,
                                        detector=self.detector if perception == "sensed" else None)
-        from assistant.perception.objects import SimObjectDetector
-
-        task = FetchTask(w, source, self.policies, max_sim_seconds=self.max_sim_seconds, on_event=on_event,
-                         object_detector=SimObjectDetector.for_scene(w.scene(scene)))
+        task = FetchTask(self.policies, object_detector=SimObjectDetector.for_scene(w.scene(scene)))
         path: list = []
-        with SimRobot(w, scene, seed=seed, odometry_noise=OdometryNoise() if self.noise else None) as robot:
-            result = task.run(robot, plan)
+        with make_robot("sim", world=w, scene=scene, seed=seed, noise=self.noise) as robot:
+            ctx = TaskContext.start(w, robot, source, max_sim_seconds=self.max_sim_seconds, on_event=on_event)
+            result = task.run(ctx, plan)
             final_frame = robot.depth_frame()
             true_pose = robot.ground_truth_pose
         # ---- evaluation (ground truth from here on)
@@ -137,7 +137,7 @@ class FetchRunner:
         known = {o.name for o in w.scene(scene).objects}
         visibility = object_visibility(final_frame, obj if obj in known else None)
         seen = is_visible(visibility)
-        if isinstance(result, FetchResult) and not result.success:
+        if not result.success:
             failure = result.status.value
         elif not seen:
             failure = ExecutionStatus.NOT_VISIBLE.value
