@@ -24,15 +24,46 @@ import time
 import tty
 from dataclasses import dataclass, field
 
+import numpy as np
+
+from assistant.robot.frames import (CameraIntrinsics, CameraMount, DepthFrame, camera_to_base_matrix,
+                                    pixel_rays)
 from assistant.robot.p3dx.commands import Command, decode_command
 from assistant.robot.p3dx.odometry import heading_units
 from assistant.robot.p3dx.packet import PacketDecoder, encode_packet
 from assistant.robot.p3dx.params import P3DXParams
 from assistant.robot.p3dx.sip import Sip, encode_sip
 
-__all__ = ["Faults", "FakeArcosController", "MotionLog"]
+__all__ = ["Faults", "FakeArcosController", "FloorCamera", "MotionLog", "quick_params"]
 
 _TICK_S = 0.01
+
+
+def quick_params(params: P3DXParams | None = None) -> P3DXParams:
+    """``params`` (default: built-in) with watchdogs short enough for tests that wait for them."""
+    return (params or P3DXParams()).with_timing(link_watchdog_s=0.3, keepalive_s=0.1,
+                                                controller_watchdog_s=0.6, handshake_timeout_s=1.0)
+
+
+class FloorCamera:
+    """A stand-in depth camera for the fake base: an empty flat floor seen from the mount."""
+
+    def __init__(self, intrinsics: CameraIntrinsics | None = None, mount: CameraMount | None = None,
+                 max_range_m: float = 4.5):
+        self.intrinsics = intrinsics or CameraIntrinsics.kinect_v1()
+        self.mount = mount or CameraMount()
+        self.closed = 0
+        down = pixel_rays(self.intrinsics) @ camera_to_base_matrix(self.mount)[:3, :3].T
+        dz = down[..., 2]  # metres of height lost per metre of depth along each ray
+        with np.errstate(divide="ignore", invalid="ignore"):
+            depth = np.where(dz < -1e-6, -self.mount.height_m / dz, 0.0)
+        self._depth = np.where(depth <= max_range_m, depth, 0.0).astype(np.float32)
+
+    def depth_frame(self) -> DepthFrame:
+        return DepthFrame(self._depth.copy(), self.intrinsics, self.mount)
+
+    def close(self) -> None:
+        self.closed += 1
 
 
 @dataclass
@@ -116,6 +147,15 @@ class FakeArcosController:
                 if fd >= 0:
                     os.close(fd)
             self._master = self._slave = -1
+
+    def wait_until(self, predicate, timeout_s: float = 1.0) -> bool:
+        """Poll ``predicate()`` until true or ``timeout_s`` passes (the fake reads every 10 ms)."""
+        deadline = time.monotonic() + timeout_s
+        while time.monotonic() < deadline:
+            if predicate():
+                return True
+            time.sleep(_TICK_S)
+        return bool(predicate())
 
     @property
     def commanded(self) -> tuple[float, float]:

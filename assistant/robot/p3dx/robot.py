@@ -25,7 +25,7 @@ from typing import Protocol, runtime_checkable
 
 from assistant.errors import AssistantError
 from assistant.geometry import Pose2D
-from assistant.robot.errors import NoCameraError
+from assistant.robot.errors import LinkLostError, NoCameraError
 from assistant.robot.frames import DepthFrame, Odometry
 from assistant.robot.interface import Robot
 from assistant.robot.p3dx.link import ArcosLink, ControllerInfo
@@ -71,9 +71,17 @@ class P3DX(Robot):
         self.name = f"P3-DX on {port}"
         self._link: ArcosLink | None = None
         self._closing = False
-        self.stop_reason: str | None = None
+        self._stop_reason: str | None = None
 
     # ---------------------------------------------------------------- extras
+    @property
+    def stop_reason(self) -> str | None:
+        """Why the base was last commanded to stop: ``"stop()"``, ``"close()"``, ``"bump"``,
+        ``"stall"``, ``"interrupted (Ctrl-C)"``, ``"error: …"``, ``"link lost: …"``,
+        ``"interpreter exit"``; None before any stop."""
+        link = self._link
+        return link.stop_reason if link is not None else self._stop_reason
+
     @property
     def controller(self) -> ControllerInfo:
         """The controller's name, class and subclass from the handshake."""
@@ -104,12 +112,14 @@ class P3DX(Robot):
             self._link = None
             link.close()
             raise
-        self.stop_reason = None
+        self._stop_reason = None
         _OPEN_ROBOTS.add(self)
 
     def _close(self) -> None:
         _OPEN_ROBOTS.discard(self)
         link, self._link = self._link, None
+        if link is not None:
+            self._stop_reason = link.stop_reason
         try:
             if self.camera is not None:
                 self.camera.close()
@@ -145,7 +155,7 @@ class P3DX(Robot):
         link = self._link
         if link is not None:
             link.stop(reason)
-        self.stop_reason = reason
+        self._stop_reason = reason
 
     def _advance(self, seconds: float) -> None:
         link = self._live_link()
@@ -157,6 +167,8 @@ class P3DX(Robot):
                 if remaining <= 0:
                     return
                 link.failed.wait(min(remaining, _POLL_S))
+        except LinkLostError:
+            raise  # the link has already commanded STOP and recorded why
         except KeyboardInterrupt:
             self._stop("interrupted (Ctrl-C)")
             log.warning("%s: interrupted: motors commanded to stop", self.name)
