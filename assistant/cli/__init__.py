@@ -26,6 +26,7 @@ COMMAND_MODULES = (
     "teach",
     "chat",
     "eval",
+    "doctor",
 )
 
 

@@ -14,6 +14,7 @@ __all__ = [
     "DeviceNotConnectedError",
     "HandshakeError",
     "LinkLostError",
+    "MotorsDisabledError",
     "NoCameraError",
     "RobotConnectionError",
     "RobotError",
@@ -95,3 +96,12 @@ class NoCameraError(RobotError):
         super().__init__(f"{robot} has no depth camera attached; plug in the Kinect and connect it "
                          "(or build the robot with a camera), or use `--robot sim` to try the "
                          "assistant without one")
+
+
+class MotorsDisabledError(RobotError):
+    """A drive command while the base reports its motors disabled (motor switch or e-stop)."""
+
+    def __init__(self, robot: str):
+        self.robot = robot
+        super().__init__(f"{robot}: the motors are disabled; release the emergency stop and press "
+                         "the MOTORS button on the robot's panel (or reconnect), then try again")

@@ -78,6 +78,7 @@ class Faults:
     answer_sync: bool = True
     stalled_left_wheel: bool = False
     front_bump: bool = False
+    motors_off: bool = False  # the motor switch is off / the e-stop is pressed: ENABLE is ignored
 
 
 @dataclass
@@ -243,7 +244,7 @@ class FakeArcosController:
     def _motion_command(self, command: int, argument: int | None) -> None:
         arg = argument or 0
         if command == Command.ENABLE:
-            self._enabled = arg == 1
+            self._enabled = arg == 1 and not self.faults.motors_off
             if not self._enabled:
                 self._cmd = (0.0, 0.0)
         elif command == Command.VEL:

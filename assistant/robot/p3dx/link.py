@@ -72,11 +72,16 @@ def _open_serial(port: str, baud: int):
 
 
 class ArcosLink:
-    """One client connection to an ARCOS controller on a serial port (see the module docstring)."""
+    """One client connection to an ARCOS controller on a serial port (see the module docstring).
+
+    ``enable_motors=False`` opens a read-only session (``assistant doctor --probe``): status
+    packets flow, the motors stay as they are.
+    """
 
     def __init__(self, port: str, params: P3DXParams, *, start: Pose2D | None = None,
-                 name: str | None = None):
+                 name: str | None = None, enable_motors: bool = True):
         self.port_name = port
+        self.enable_motors = enable_motors
         self.params = params
         self.name = name or f"P3-DX on {port}"
         self.info = ControllerInfo()
@@ -87,6 +92,7 @@ class ArcosLink:
         self._state_lock = threading.Lock()
         self._stop_event = threading.Event()
         self._first_sip = threading.Event()
+        self._motors_on = threading.Event()
         self.failed = threading.Event()
         self._thread: threading.Thread | None = None
         self._t0 = 0.0
@@ -98,6 +104,7 @@ class ArcosLink:
         self._last_bytes_at = 0.0
         self._bad_sips = 0
         self._contact = False
+        self._contact_sides = (False, False)  # (front, rear) bumpers pressed
         self.bumped = False
         self.fault: LinkLostError | None = None
         self.stop_reason: str | None = None
@@ -107,9 +114,15 @@ class ArcosLink:
         """Open the port and the connection; raises SerialPortError or HandshakeError."""
         self._serial = _open_serial(self.port_name, self.params.baud)
         try:
-            self._serial.reset_input_buffer()
-            self.info = self._handshake()
-            self._configure()
+            try:
+                self._serial.reset_input_buffer()
+                self.info = self._handshake()
+                self._configure()
+            except (OSError, _serial_exception()) as error:
+                if isinstance(error, HandshakeError):
+                    raise
+                raise SerialPortError(self.port_name, f"the port failed during the handshake ({error})",
+                                      "check the cable and that the port is a serial port") from error
             self._t0 = time.monotonic()
             self._last_sip_at = self._last_bytes_at = self._last_sent = self._t0
             self._thread = threading.Thread(target=self._run, name=f"arcos-reader {self.port_name}",
@@ -118,6 +131,8 @@ class ArcosLink:
             if not self._first_sip.wait(self.params.handshake_timeout_s) or self.fault is not None:
                 detail = self.fault.reason if self.fault else "no status packet after OPEN"
                 raise HandshakeError(self.port_name, detail)
+            if self.enable_motors and not self._motors_on.wait(3 * self.params.sip_period_s + 0.1):
+                log.warning("%s: the motors did not enable (emergency stop pressed or MOTORS off?)", self.name)
         except BaseException:
             self.close()
             raise
@@ -164,9 +179,10 @@ class ArcosLink:
                 (Command.SETRV, int(round(math.degrees(p.max_angular_rad_s)))),
                 (Command.SETA, accel_mm), (Command.SETA, -accel_mm),
                 (Command.SETRA, accel_deg), (Command.SETRA, -accel_deg),
-                (Command.BUMPSTALL, p.bump_stall),
-                (Command.ENABLE, 1)):
+                (Command.BUMPSTALL, p.bump_stall)):
             self._write(command_payload(command, argument))
+        if self.enable_motors:
+            self._write(command_payload(Command.ENABLE, 1))
 
     # ------------------------------------------------------------------ commands
     def drive(self, linear_mm_s: int, angular_deg_s: int) -> None:
@@ -179,10 +195,14 @@ class ArcosLink:
             else:
                 self.bumped = False
             self._command = (linear_mm_s, angular_deg_s)
-        if linear_mm_s == 0 and angular_deg_s == 0:
-            self._write(command_payload(Command.STOP))
-        else:
-            self._send_command()
+        try:
+            if linear_mm_s == 0 and angular_deg_s == 0:
+                self._write(command_payload(Command.STOP))
+            else:
+                self._send_command()
+        except (OSError, _serial_exception()) as error:
+            self._fail("port vanished", f"writing failed: {error}")
+            raise self.fault from error
 
     def stop(self, reason: str) -> None:
         """Command zero velocity (STOP); never raises, even on a failed link."""
@@ -282,6 +302,8 @@ class ArcosLink:
             self._contact = contact
             driving = self._command != (0, 0)
         self._first_sip.set()
+        if sip.motors_enabled:
+            self._motors_on.set()
         if rising and driving:
             what = "stall" if sip.stalled else "bump"
             log.warning("%s: %s flag in the status packet: stopping the base", self.name, what)
@@ -290,12 +312,14 @@ class ArcosLink:
             self.stop(what)
 
     def _into_contact(self, linear_mm_s: int) -> bool:
-        front, rear = getattr(self, "_contact_sides", (False, False))
+        front, rear = self._contact_sides
         if not (front or rear):  # a stall: any drive pushes on
             return linear_mm_s != 0
         return (front and linear_mm_s > 0) or (rear and linear_mm_s < 0)
 
     def _fail(self, reason: str, detail: str) -> None:
+        if self.fault is not None:
+            return
         self.fault = LinkLostError(self.name, reason, detail)
         log.error("%s", self.fault)
         self.stop(f"link lost: {reason}")

@@ -25,7 +25,7 @@ from typing import Protocol, runtime_checkable
 
 from assistant.errors import AssistantError
 from assistant.geometry import Pose2D
-from assistant.robot.errors import LinkLostError, NoCameraError
+from assistant.robot.errors import LinkLostError, MotorsDisabledError, NoCameraError
 from assistant.robot.frames import DepthFrame, Odometry
 from assistant.robot.interface import Robot
 from assistant.robot.p3dx.link import ArcosLink, ControllerInfo
@@ -148,7 +148,13 @@ class P3DX(Robot):
         p = self.params
         linear = max(-p.max_linear_m_s, min(p.max_linear_m_s, linear_m_s))
         angular = max(-p.max_angular_rad_s, min(p.max_angular_rad_s, angular_rad_s))
-        self._live_link().drive(int(round(linear * 1000)), int(round(math.degrees(angular))))
+        link = self._live_link()
+        command = (int(round(linear * 1000)), int(round(math.degrees(angular))))
+        sip = link.last_sip
+        if command != (0, 0) and sip is not None and not sip.motors_enabled:
+            link.stop("motors disabled")
+            raise MotorsDisabledError(self.name)
+        link.drive(*command)
 
     def _stop(self, reason: str | None = None) -> None:
         reason = reason or ("close()" if self._closing else "stop()")

@@ -8,10 +8,10 @@ import pytest
 
 from assistant.errors import AssistantError
 from assistant.robot import make_robot
-from assistant.robot.errors import NoCameraError, SerialPortError
+from assistant.robot.errors import MotorsDisabledError, NoCameraError, SerialPortError
 from assistant.robot.p3dx import P3DX
 from assistant.robot.p3dx.commands import Command
-from assistant.robot.p3dx.fake import FloorCamera
+from assistant.robot.p3dx.fake import FakeArcosController, Faults, FloorCamera
 
 
 def _commands(fake, number):
@@ -149,3 +149,12 @@ def test_reconnect_after_close_starts_a_new_session(fake, params):
             robot.advance(0.2)
     assert fake.wait_until(lambda: fake.log.closed == 2)
     assert fake.log.opened == 2
+
+
+def test_disabled_motors_are_a_clear_error(params):
+    with FakeArcosController(params, faults=Faults(motors_off=True)) as fake:
+        with P3DX(fake.port, params=params) as robot:
+            with pytest.raises(MotorsDisabledError, match="MOTORS button"):
+                robot.send_velocity(0.2, 0.0)
+            robot.stop()  # stopping is always allowed
+            assert robot.stop_reason == "stop()"
