@@ -28,6 +28,8 @@ UDEV_RULES = "99-assistant-robot.rules"
 KINECT_VENDOR = "045e"
 KINECT_CAMERA_PRODUCTS = ("02ae", "02bf")
 SERIAL_GLOBS = ("ttyUSB*", "ttyACM*")
+FIRST_DRIVE_M = 0.2
+FIRST_DRIVE_SPEED_M_S = 0.1
 
 
 @dataclass(frozen=True)
@@ -48,12 +50,17 @@ def register(subparsers) -> None:
     parser.add_argument("--port", help="the robot's serial port to check (default: every USB-serial port)")
     parser.add_argument("--probe", action="store_true",
                         help="with --port: talk to the controller (handshake, one status packet; no motion)")
+    parser.add_argument("--first-drive", action="store_true",
+                        help=f"with --port: the bring-up drive — {FIRST_DRIVE_M:g} m straight ahead at "
+                             f"{FIRST_DRIVE_SPEED_M_S:g} m/s, then stop; clear 1 m in front of the robot")
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
     checks = run_checks(port=args.port, probe=args.probe)
+    if args.first_drive:
+        checks.append(first_drive(args.port))
     counts = {s: sum(c.status == s for c in checks) for s in ("ok", "warn", "fail")}
     if args.json:
         emit_json({"checks": [asdict(c) for c in checks], "ok": counts["fail"] == 0, "counts": counts})
@@ -155,6 +162,41 @@ def probe_controller(port: str | None) -> Check:
         return Check("robot controller", "fail", str(error), "see hardware/README.md, bring-up steps 1–4")
     finally:
         link.close()
+
+
+def first_drive(port: str | None, camera=None) -> Check:
+    """Drive :data:`FIRST_DRIVE_M` straight ahead at a walking-slow speed, stop, report the odometry.
+
+    Compare the reported distance with a tape measure: a different figure means
+    ``conversion.distance_mm_per_unit`` in ``hardware/p3dx.yaml`` is wrong for this robot.
+    """
+    if not port:
+        return Check("first drive", "fail", "--first-drive needs --port", "add --port /dev/ttyUSB0")
+    from assistant.errors import AssistantError
+    from assistant.robot.p3dx.robot import P3DX
+
+    robot = P3DX(port, camera, max_linear_m_s=FIRST_DRIVE_SPEED_M_S)
+    try:
+        with robot:
+            start = robot.odometry().pose
+            robot.send_velocity(FIRST_DRIVE_SPEED_M_S, 0.0)
+            deadline = robot.time_s + 3 * FIRST_DRIVE_M / FIRST_DRIVE_SPEED_M_S
+            while robot.odometry().pose.distance_to(start) < FIRST_DRIVE_M and robot.time_s < deadline:
+                if robot.bumped:
+                    return Check("first drive", "fail", "the base bumped or stalled", "clear the way, check the wheels")
+                robot.advance(0.05)
+            robot.stop()
+            robot.advance(1.0)
+            moved = robot.odometry().pose
+    except AssistantError as error:
+        return Check("first drive", "fail", str(error), "see hardware/README.md, bring-up steps 1–5")
+    distance, turned = moved.distance_to(start), abs(moved.theta - start.theta)
+    if distance < 0.5 * FIRST_DRIVE_M:
+        return Check("first drive", "fail", f"odometry moved only {distance:.3f} m",
+                     "are the motors enabled (MOTORS button) and the wheels on the floor?")
+    return Check("first drive", "ok", f"odometry says {distance:.3f} m ahead, {turned:.3f} rad turned; "
+                                      "measure the real distance with a tape",
+                 "if the tape disagrees, scale conversion.distance_mm_per_unit in hardware/p3dx.yaml")
 
 
 def check_udev_rules(udev_dir: str) -> Check:

@@ -91,3 +91,14 @@ def test_probe_of_a_silent_port_fails_with_the_reason(capsys):
     probe = {c["name"]: c for c in out["checks"]}["robot controller"]
     assert probe["status"] == "fail" and "no robot controller answered" in probe["detail"]
     assert status == 1
+
+
+def test_first_drive_moves_the_base_a_little_and_reports_the_odometry(capsys):
+    with FakeArcosController() as fake:
+        status = main(["doctor", "--port", fake.port, "--first-drive", "--json"])
+        out = json.loads(capsys.readouterr().out)
+        drive = {c["name"]: c for c in out["checks"]}["first drive"]
+        assert drive["status"] == "ok", drive
+        assert 0.19 <= fake.x_m <= 0.26 and fake.commanded == (0.0, 0.0)
+        assert max(arg for _, cmd, arg in fake.log.commands if cmd == 11) == 100  # VEL ≤ 100 mm/s
+    assert status == (1 if out["counts"]["fail"] else 0)

@@ -41,8 +41,8 @@ _TICK_S = 0.01
 
 def quick_params(params: P3DXParams | None = None) -> P3DXParams:
     """``params`` (default: built-in) with watchdogs short enough for tests that wait for them."""
-    return (params or P3DXParams()).with_timing(link_watchdog_s=0.3, keepalive_s=0.1,
-                                                controller_watchdog_s=0.6, handshake_timeout_s=1.0)
+    return (params or P3DXParams()).with_timing(link_watchdog_s=0.4, keepalive_s=0.1,
+                                                controller_watchdog_s=0.8, handshake_timeout_s=1.5)
 
 
 class FloorCamera:

@@ -143,16 +143,12 @@ class ArcosLink:
         while time.monotonic() < deadline:
             self._write(command_payload(step))
             reply = self._await_reply(min(deadline, time.monotonic() + 0.4))
-            if reply is None:
-                step = 0
-                continue
-            if is_sip(reply):  # still open from an earlier client: close that session, start over
+            if reply is not None and is_sip(reply):  # still open from an earlier client: close it
                 self._write(command_payload(CLOSE))
                 time.sleep(0.2)
-                self._serial.reset_input_buffer()
-                step = 0
-                continue
-            if reply[0] != step:
+                reply = None
+            if reply is None or reply[0] != step:  # start over from SYNC0 on a clean line
+                self._flush_input()
                 step = 0
                 continue
             if step == 2:
@@ -160,6 +156,11 @@ class ArcosLink:
             step += 1
         raise HandshakeError(self.port_name, f"no answer to SYNC{step} within "
                                              f"{self.params.handshake_timeout_s:g} s")
+
+    def _flush_input(self) -> None:
+        time.sleep(0.05)  # let a late reply arrive, then drop it
+        self._serial.reset_input_buffer()
+        self._decoder = PacketDecoder()
 
     def _await_reply(self, until: float) -> bytes | None:
         while time.monotonic() < until:
@@ -272,7 +273,8 @@ class ArcosLink:
                 if is_sip(payload):
                     self._handle_sip(payload, now)
             silent_for = now - self._last_sip_at
-            if silent_for > p.link_watchdog_s:
+            limit = p.link_watchdog_s if self._first_sip.is_set() else p.handshake_timeout_s
+            if silent_for > limit:
                 garbled = self._last_bytes_at > self._last_sip_at
                 self._fail("garbled data" if garbled else "silent controller",
                            f"no valid status packet for {silent_for:.2f} s"
