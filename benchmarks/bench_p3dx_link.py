@@ -5,8 +5,9 @@
 Prints medians (and min/max) over repeated runs of:
   * connect: open the port, SYNC0/1/2, OPEN, limits, ENABLE, first status packet;
   * stop(): from the call until the controller has the STOP command;
-  * a silent controller / garbage on the line: from the fault until the controller has STOP
-    (the driver's link watchdog is 0.4 s here, as in the tests; 0.5 s in hardware/p3dx.yaml);
+  * a silent controller / garbage on the line: from the last valid status packet the controller
+    sent until it has STOP (the driver's link watchdog is 0.4 s here, as in the tests; 0.5 s in
+    hardware/p3dx.yaml);
   * the port vanishing: from the fault until the driver raises LinkLostError, and until the
     controller's own watchdog (0.8 s here) stops the motors.
 The fake runs in this process's threads, so the figures are the driver's and the fake's together
@@ -53,7 +54,9 @@ def _fault_to_stop(params, inject) -> float:
             robot.advance(3.0)
         except LinkLostError:
             pass
-        took = _until(fake, lambda: fake.log.stop_commands, start)
+        _until(fake, lambda: fake.log.stop_commands, start)
+        stop = fake.log.stop_commands[0]
+        took = stop - max(t for t in fake.log.sips_sent if t <= stop)
         robot.close()
     return took
 
@@ -99,8 +102,8 @@ def main(argv: list[str] | None = None) -> int:
           f"(link watchdog {params.link_watchdog_s:g} s, controller watchdog {params.controller_watchdog_s:g} s)")
     print(f"  connect (handshake → first SIP)        {_stats(connect)}")
     print(f"  stop() → controller has STOP           {_stats(stop)}")
-    print(f"  silent controller → STOP               {_stats(silent)}")
-    print(f"  garbage on the line → STOP             {_stats(garbage)}")
+    print(f"  silent controller: last SIP → STOP     {_stats(silent)}")
+    print(f"  garbage on the line: last SIP → STOP   {_stats(garbage)}")
     print(f"  port vanished → LinkLostError          {_stats(raised)}")
     print(f"  port vanished → controller watchdog    {_stats(watchdog)}")
     return 0

@@ -88,6 +88,7 @@ class MotionLog:
     commands: list[tuple[float, int, int | None]] = field(default_factory=list)
     stop_commands: list[float] = field(default_factory=list)
     watchdog_stops: list[float] = field(default_factory=list)
+    sips_sent: list[float] = field(default_factory=list)  # whole, valid SIPs written
     opened: int = 0
     closed: int = 0
 
@@ -307,11 +308,16 @@ class FakeArcosController:
             self._write(bytes(rng.randrange(256) for _ in range(rng.randrange(10, 40))))
             return
         packet = bytearray(encode_packet(encode_sip(self._sip())))
+        intact = True
         if f.bad_checksum and rng.random() < f.bad_checksum:
             packet[-1] ^= 0x5A
+            intact = False
         if f.truncate and rng.random() < f.truncate:
             packet = packet[:rng.randrange(3, len(packet) - 1)]
+            intact = False
         self._write(bytes(packet))
+        if intact:
+            self.log.sips_sent.append(time.monotonic())
 
     def _write(self, data: bytes) -> None:
         with self._lock:

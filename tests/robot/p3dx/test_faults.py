@@ -21,6 +21,14 @@ from assistant.robot.p3dx.fake import FakeArcosController, Faults, quick_params
 from .conftest import open_fds, reader_threads
 
 REPO = Path(__file__).resolve().parents[3]
+#: scheduling slack on a loaded machine (the driver reads the port every 20 ms)
+SLACK_S = 0.2
+
+
+def _stop_after_last_sip(fake) -> float:
+    """Seconds from the last valid SIP the controller sent to the first STOP it received."""
+    stop = fake.log.stop_commands[0]
+    return stop - max(t for t in fake.log.sips_sent if t <= stop)
 
 
 def _drive(fake, params, seconds=0.3):
@@ -50,7 +58,7 @@ def test_port_vanishing_mid_drive(fake, params):
     assert took < params.link_watchdog_s
     # nothing can reach the controller now: its own watchdog stops the motors
     assert fake.wait_until(lambda: fake.commanded == (0.0, 0.0), params.controller_watchdog_s + 0.3)
-    assert fake.log.watchdog_stops[0] - vanished_at <= params.controller_watchdog_s + 0.1
+    assert fake.log.watchdog_stops[0] - vanished_at <= params.controller_watchdog_s + SLACK_S
     with pytest.raises(LinkLostError):
         robot.odometry()  # the error stays until close()
     robot.close()
@@ -60,12 +68,11 @@ def test_port_vanishing_mid_drive(fake, params):
 
 def test_silent_controller_is_told_to_stop_within_one_watchdog_period(fake, params):
     robot = _drive(fake, params)
-    silent_at = time.monotonic()
     fake.faults.silent = True
     error, _ = _link_lost(robot, params.link_watchdog_s)
     assert error.reason == "silent controller"
     assert fake.wait_until(lambda: fake.log.stop_commands)
-    assert fake.log.stop_commands[0] - silent_at <= params.link_watchdog_s + params.sip_period_s + 0.1
+    assert _stop_after_last_sip(fake) <= params.link_watchdog_s + SLACK_S
     assert fake.commanded == (0.0, 0.0) and fake.log.watchdog_stops == []
     assert robot.stop_reason == "link lost: silent controller"
     robot.close()
@@ -74,12 +81,11 @@ def test_silent_controller_is_told_to_stop_within_one_watchdog_period(fake, para
 
 def test_garbage_on_the_line_is_told_to_stop_within_one_watchdog_period(fake, params):
     robot = _drive(fake, params)
-    garbage_at = time.monotonic()
     fake.faults.garbage = True
     error, _ = _link_lost(robot, params.link_watchdog_s)
     assert error.reason == "garbled data"
     assert fake.wait_until(lambda: fake.log.stop_commands)
-    assert fake.log.stop_commands[0] - garbage_at <= params.link_watchdog_s + params.sip_period_s + 0.1
+    assert _stop_after_last_sip(fake) <= params.link_watchdog_s + SLACK_S
     assert fake.commanded == (0.0, 0.0)
     robot.close()
 
@@ -149,6 +155,6 @@ def test_a_client_process_that_dies_never_leaves_the_robot_driving(how):
         ended_at = time.monotonic()
         assert fake.wait_until(lambda: fake.commanded == (0.0, 0.0), params.controller_watchdog_s + 0.5)
         if how == "crash":
-            assert fake.log.watchdog_stops and fake.log.watchdog_stops[0] - ended_at < params.controller_watchdog_s + 0.1
+            assert fake.log.watchdog_stops and fake.log.watchdog_stops[0] - ended_at < params.controller_watchdog_s + SLACK_S
         else:
             assert fake.log.stop_commands and fake.log.closed == 1 and not fake.log.watchdog_stops
