@@ -41,7 +41,7 @@ _TICK_S = 0.01
 
 def quick_params(params: P3DXParams | None = None) -> P3DXParams:
     """``params`` (default: built-in) with watchdogs short enough for tests that wait for them."""
-    return (params or P3DXParams()).with_timing(link_watchdog_s=0.4, keepalive_s=0.1,
+    return (params or P3DXParams()).with_timing(link_watchdog_s=0.4, keepalive_s=0.1, command_timeout_s=1.0,
                                                 controller_watchdog_s=0.8, handshake_timeout_s=1.5)
 
 

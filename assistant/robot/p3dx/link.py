@@ -4,7 +4,9 @@
 connection, sets the speed and acceleration limits, arms the controller's bump-stall stop and
 enables the motors. A reader thread then parses every SIP into odometry and, every
 ``keepalive_s``, re-sends the current velocity command (or PULSE) so the controller's own
-watchdog never fires while the client is alive.
+watchdog never fires while the client is alive — and only while it is: with no call from the
+program (:meth:`ArcosLink.touch`) for ``command_timeout_s`` the thread commands STOP, so a hung
+program cannot leave the robot driving.
 
 Safety, in the thread: no valid SIP for ``link_watchdog_s`` (a silent controller, or garbled
 bytes) or a read error (the port vanished) ends the link: STOP is written if the port still
@@ -100,6 +102,7 @@ class ArcosLink:
         self._sip: Sip | None = None
         self._command = (0, 0)  # (mm/s, deg/s) being driven
         self._last_sent = 0.0
+        self._last_call = 0.0  # the client's last call (touch)
         self._last_sip_at = 0.0
         self._last_bytes_at = 0.0
         self._bad_sips = 0
@@ -124,7 +127,7 @@ class ArcosLink:
                 raise SerialPortError(self.port_name, f"the port failed during the handshake ({error})",
                                       "check the cable and that the port is a serial port") from error
             self._t0 = time.monotonic()
-            self._last_sip_at = self._last_bytes_at = self._last_sent = self._t0
+            self._last_sip_at = self._last_bytes_at = self._last_sent = self._last_call = self._t0
             self._thread = threading.Thread(target=self._run, name=f"arcos-reader {self.port_name}",
                                             daemon=True)
             self._thread.start()
@@ -186,9 +189,14 @@ class ArcosLink:
             self._write(command_payload(Command.ENABLE, 1))
 
     # ------------------------------------------------------------------ commands
+    def touch(self) -> None:
+        """Note that the client is alive (every call on the robot does this)."""
+        self._last_call = time.monotonic()
+
     def drive(self, linear_mm_s: int, angular_deg_s: int) -> None:
         """Command a forward speed (mm/s) and a turn rate (deg/s); refuses to push into a contact."""
         self._raise_fault()
+        self.touch()
         with self._state_lock:
             if self._contact and self._into_contact(linear_mm_s):
                 self.bumped = True
@@ -281,6 +289,10 @@ class ArcosLink:
                            + (f"; {self._decoder.stats.bad_checksums} bad checksums, "
                               f"{self._bad_sips} unreadable SIPs" if garbled else ""))
                 return
+            if self._command != (0, 0) and now - self._last_call > p.command_timeout_s:
+                log.warning("%s: no call from the program for %.1f s: stopping the base", self.name,
+                            now - self._last_call)
+                self.stop("command timeout")
             if now - self._last_sent >= p.keepalive_s:
                 try:
                     self._send_command()

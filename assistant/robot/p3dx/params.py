@@ -31,6 +31,7 @@ class P3DXParams:
     sip_period_s: float = 0.1
     link_watchdog_s: float = 0.5
     keepalive_s: float = 0.25
+    command_timeout_s: float = 2.0
     controller_watchdog_s: float = 2.0
     handshake_timeout_s: float = 3.0
     bump_stall: int = 3
@@ -38,8 +39,8 @@ class P3DXParams:
 
     def with_timing(self, **changes: float) -> "P3DXParams":
         """A copy with some timing values changed (tests shorten the watchdogs)."""
-        allowed = {"sip_period_s", "link_watchdog_s", "keepalive_s", "controller_watchdog_s",
-                   "handshake_timeout_s"}
+        allowed = {"sip_period_s", "link_watchdog_s", "keepalive_s", "command_timeout_s",
+                   "controller_watchdog_s", "handshake_timeout_s"}
         unknown = set(changes) - allowed
         if unknown:
             raise TypeError(f"not timing values: {', '.join(sorted(unknown))}")
@@ -78,10 +79,13 @@ def load_p3dx_params(folder: str | os.PathLike[str] | None = None) -> P3DXParams
                             f"{wheel_base} m disagrees with conversion.diff_conv_factor, which implies "
                             f"{implied:.4f} m (2 / factor, in mm); change one of them")
     timing = {k: number(data, "timing", k) for k in (
-        "sip_period_s", "link_watchdog_s", "keepalive_s", "controller_watchdog_s", "handshake_timeout_s")}
+        "sip_period_s", "link_watchdog_s", "keepalive_s", "command_timeout_s", "controller_watchdog_s",
+        "handshake_timeout_s")}
     if timing["keepalive_s"] >= timing["controller_watchdog_s"]:
         raise DataFileError(path, "timing.keepalive_s", "must be shorter than controller_watchdog_s, "
                                                         "or the controller stops the motors between packets")
+    if timing["command_timeout_s"] <= timing["keepalive_s"]:
+        raise DataFileError(path, "timing.command_timeout_s", "must be longer than keepalive_s")
     if timing["link_watchdog_s"] <= timing["sip_period_s"]:
         raise DataFileError(path, "timing.link_watchdog_s", "must be longer than sip_period_s")
     return P3DXParams(

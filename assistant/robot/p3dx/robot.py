@@ -129,6 +129,7 @@ class P3DX(Robot):
 
     def _live_link(self) -> ArcosLink:
         assert self._link is not None  # the public methods checked the connection
+        self._link.touch()
         return self._link
 
     def _odometry(self) -> Odometry:
@@ -168,6 +169,7 @@ class P3DX(Robot):
         deadline = time.monotonic() + seconds
         try:
             while True:
+                link.touch()
                 link.odometry()  # raises the link's fault, if any
                 remaining = deadline - time.monotonic()
                 if remaining <= 0:

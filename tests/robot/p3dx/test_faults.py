@@ -158,3 +158,31 @@ def test_a_client_process_that_dies_never_leaves_the_robot_driving(how):
             assert fake.log.watchdog_stops and fake.log.watchdog_stops[0] - ended_at < params.controller_watchdog_s + SLACK_S
         else:
             assert fake.log.stop_commands and fake.log.closed == 1 and not fake.log.watchdog_stops
+
+
+def test_a_program_that_stops_calling_the_robot_stops_the_base(fake, params):
+    robot = _drive(fake, params)
+    quiet_from = time.monotonic()
+    time.sleep(params.command_timeout_s + 0.3)  # a hung main thread: no call on the robot
+    assert fake.log.stop_commands, "the reader thread must not keep a forgotten command alive"
+    assert fake.log.stop_commands[0] - quiet_from <= params.command_timeout_s + SLACK_S
+    assert fake.log.watchdog_stops == [] and robot.stop_reason == "command timeout"
+    robot.send_velocity(0.0, 0.3)  # the program is back: driving resumes
+    robot.advance(0.2)
+    assert fake.commanded[1] > 0
+    robot.close()
+
+
+def test_an_exception_inside_advance_stops_the_base(fake, params, monkeypatch):
+    robot = _drive(fake, params)
+    link = robot._link
+
+    def broken_wait(timeout):
+        raise RuntimeError("a bug in a callback")
+
+    monkeypatch.setattr(link.failed, "wait", broken_wait)
+    with pytest.raises(RuntimeError):
+        robot.advance(1.0)
+    assert robot.stop_reason == "error: RuntimeError"
+    assert fake.wait_until(lambda: fake.commanded == (0.0, 0.0), 0.3)
+    robot.close()
