@@ -185,7 +185,8 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
     scene, object) → SearchResult``) reuses finished searches instead of searching again."""
     from assistant.errors import AssistantError
     from assistant.generation import Describer, load_generation_model, oracle_cases, repeated_phrases
-    from assistant.generation.content import entry_heading, support_of
+    from assistant.generation.content import support_of
+    from assistant.generation.entry import entry_heading
     from assistant.grounding.types import RDT
 
     describer = Describer(load_generation_model(corpus_paths), policies="default" if policies else None)
