@@ -5,9 +5,23 @@ from __future__ import annotations
 import json
 import os
 
+import pytest
+
 from assistant.cli import main
 from assistant.cli.doctor import check_kinect_usb, check_serial_ports, check_udev_rules, run_checks
-from assistant.robot.p3dx.fake import FakeArcosController, Faults
+from assistant.robot.p3dx.fake import FakeArcosController, Faults, patient_params, quick_params
+
+
+def _doctor_params(monkeypatch, params):
+    """The doctor reads hardware/p3dx.yaml; give it these parameters instead."""
+    monkeypatch.setattr("assistant.robot.p3dx.params.load_p3dx_params", lambda folder=None: params)
+    monkeypatch.setattr("assistant.robot.p3dx.robot.load_p3dx_params", lambda folder=None: params)
+
+
+@pytest.fixture(autouse=True)
+def patient_watchdogs(monkeypatch):
+    """Watchdogs a loaded test machine never trips."""
+    _doctor_params(monkeypatch, patient_params())
 
 
 def _by_name(checks):
@@ -76,7 +90,7 @@ def test_udev_rules_check(tmp_path):
 
 
 def test_probe_talks_to_the_controller_without_enabling_the_motors():
-    with FakeArcosController() as fake:
+    with FakeArcosController(patient_params()) as fake:
         checks = _by_name(run_checks(port=fake.port, probe=True))
         assert checks["robot controller"].status == "ok"
         assert "fake-p3dx" in checks["robot controller"].detail and "12.6 V" in checks["robot controller"].detail
@@ -84,8 +98,9 @@ def test_probe_talks_to_the_controller_without_enabling_the_motors():
         assert not any(cmd == 4 for _, cmd, _ in fake.log.commands), "ENABLE must not be sent"
 
 
-def test_probe_of_a_silent_port_fails_with_the_reason(capsys):
-    with FakeArcosController(faults=Faults(answer_sync=False)) as fake:
+def test_probe_of_a_silent_port_fails_with_the_reason(capsys, monkeypatch):
+    _doctor_params(monkeypatch, quick_params())  # a shorter handshake timeout
+    with FakeArcosController(quick_params(), faults=Faults(answer_sync=False)) as fake:
         status = main(["doctor", "--port", fake.port, "--probe", "--json"])
     out = json.loads(capsys.readouterr().out)
     probe = {c["name"]: c for c in out["checks"]}["robot controller"]
@@ -94,7 +109,7 @@ def test_probe_of_a_silent_port_fails_with_the_reason(capsys):
 
 
 def test_first_drive_moves_the_base_a_little_and_reports_the_odometry(capsys):
-    with FakeArcosController() as fake:
+    with FakeArcosController(patient_params()) as fake:
         status = main(["doctor", "--port", fake.port, "--first-drive", "--json"])
         out = json.loads(capsys.readouterr().out)
         drive = {c["name"]: c for c in out["checks"]}["first drive"]

@@ -24,9 +24,9 @@ def _noisy_sim_robot():
 def _p3dx_over_fake_controller(request):
     """The real P3-DX driver over the fake ARCOS controller (a pty), with a stand-in floor camera."""
     from assistant.robot.p3dx import P3DX
-    from assistant.robot.p3dx.fake import FakeArcosController, FloorCamera, quick_params
+    from assistant.robot.p3dx.fake import FakeArcosController, FloorCamera, patient_params
 
-    params = quick_params()
+    params = patient_params()
     fake = FakeArcosController(params)
     request.addfinalizer(fake.close)
     return lambda: P3DX(fake.port, FloorCamera(), params=params)

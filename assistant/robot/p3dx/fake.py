@@ -34,15 +34,22 @@ from assistant.robot.p3dx.packet import PacketDecoder, encode_packet
 from assistant.robot.p3dx.params import P3DXParams
 from assistant.robot.p3dx.sip import Sip, encode_sip
 
-__all__ = ["Faults", "FakeArcosController", "FloorCamera", "MotionLog", "quick_params"]
+__all__ = ["Faults", "FakeArcosController", "FloorCamera", "MotionLog", "patient_params", "quick_params"]
 
 _TICK_S = 0.01
 
 
 def quick_params(params: P3DXParams | None = None) -> P3DXParams:
     """``params`` (default: built-in) with watchdogs short enough for tests that wait for them."""
-    return (params or P3DXParams()).with_timing(link_watchdog_s=0.4, keepalive_s=0.1, command_timeout_s=1.0,
-                                                controller_watchdog_s=0.8, handshake_timeout_s=1.5)
+    return (params or P3DXParams()).with_timing(link_watchdog_s=0.6, keepalive_s=0.1, command_timeout_s=1.0,
+                                                controller_watchdog_s=1.0, handshake_timeout_s=2.0)
+
+
+def patient_params(params: P3DXParams | None = None) -> P3DXParams:
+    """``params`` with watchdogs long enough that a heavily loaded test machine never trips them
+    (for tests of something else than the watchdogs)."""
+    return (params or P3DXParams()).with_timing(link_watchdog_s=2.0, keepalive_s=0.25, command_timeout_s=4.0,
+                                                controller_watchdog_s=4.0, handshake_timeout_s=4.0)
 
 
 class FloorCamera:

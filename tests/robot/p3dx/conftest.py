@@ -8,7 +8,7 @@ import threading
 import pytest
 
 from assistant.robot.p3dx import P3DXParams
-from assistant.robot.p3dx.fake import FakeArcosController, Faults, quick_params
+from assistant.robot.p3dx.fake import FakeArcosController, Faults, patient_params
 
 
 def reader_threads() -> list[threading.Thread]:
@@ -21,12 +21,13 @@ def open_fds() -> int:
 
 @pytest.fixture
 def params() -> P3DXParams:
-    return quick_params()
+    """Long watchdogs: tests of the watchdogs themselves override this fixture with quick ones."""
+    return patient_params()
 
 
 @pytest.fixture
 def fake(params):
-    """A fake controller with the short watchdogs; closed (thread joined) after the test."""
+    """A fake controller with the test's ``params``; closed (thread joined) after the test."""
     controller = FakeArcosController(params, faults=Faults())
     yield controller
     controller.close()

@@ -25,6 +25,12 @@ REPO = Path(__file__).resolve().parents[3]
 SLACK_S = 0.2
 
 
+@pytest.fixture
+def params() -> P3DXParams:
+    """Short watchdogs: these tests wait for them."""
+    return quick_params()
+
+
 def _stop_after_last_sip(fake) -> float:
     """Seconds from the last valid SIP the controller sent to the first STOP it received."""
     stop = fake.log.stop_commands[0]
@@ -132,7 +138,7 @@ def test_ctrl_c_during_advance_stops_the_base(fake, params):
 _CLIENT = textwrap.dedent("""
     import os, sys
     from assistant.robot.p3dx import P3DX, P3DXParams
-    params = P3DXParams().with_timing(controller_watchdog_s=0.8, keepalive_s=0.1)
+    params = P3DXParams().with_timing(controller_watchdog_s=1.0, keepalive_s=0.1)
     robot = P3DX(sys.argv[1], params=params)
     robot.connect()
     robot.send_velocity(0.3, 0.0)

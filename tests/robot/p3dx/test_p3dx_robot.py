@@ -11,7 +11,16 @@ from assistant.robot import make_robot
 from assistant.robot.errors import MotorsDisabledError, NoCameraError, SerialPortError
 from assistant.robot.p3dx import P3DX
 from assistant.robot.p3dx.commands import Command
-from assistant.robot.p3dx.fake import FakeArcosController, Faults, FloorCamera
+from assistant.robot.p3dx.fake import FakeArcosController, Faults, FloorCamera, quick_params
+
+
+def _advance_until(robot, predicate, timeout_s=2.0):
+    """Let robot time pass in small steps until ``predicate()`` (a loaded machine is slow)."""
+    waited = 0.0
+    while not predicate() and waited < timeout_s:
+        robot.advance(0.05)
+        waited += 0.05
+    return predicate()
 
 
 def _commands(fake, number):
@@ -52,10 +61,11 @@ def test_commands_are_clamped_to_the_limits_of_the_hardware_file(fake, params):
             robot.send_velocity(math.nan, 0.0)
 
 
+@pytest.mark.parametrize("params", [quick_params()], ids=["quick-watchdogs"])
 def test_keepalive_repeats_the_command_inside_the_controller_watchdog(fake, params):
     with P3DX(fake.port, params=params) as robot:
         robot.send_velocity(0.0, 0.3)
-        robot.advance(1.5)  # longer than the controller's 0.6 s watchdog
+        robot.advance(2.0)  # longer than the controller's 1 s watchdog
         assert fake.log.watchdog_stops == []
         assert fake.commanded[1] == pytest.approx(math.radians(17))
         times = [t for t, c, _ in fake.log.commands if c == Command.RVEL]
@@ -86,8 +96,8 @@ def test_front_bump_stops_the_base_and_refuses_to_push_on(fake, params):
         robot.send_velocity(0.3, 0.0)
         robot.advance(0.3)
         fake.faults.front_bump = True
-        robot.advance(0.3)
-        assert robot.bumped and robot.stop_reason == "bump"
+        assert _advance_until(robot, lambda: robot.bumped)
+        assert robot.stop_reason == "bump"
         assert fake.wait_until(lambda: fake.commanded == (0.0, 0.0))
         assert fake.log.stop_commands
         robot.send_velocity(0.2, 0.0)  # forward into the bumper: refused
@@ -104,8 +114,8 @@ def test_wheel_stall_stops_the_base(fake, params):
         robot.send_velocity(0.3, 0.0)
         robot.advance(0.2)
         fake.faults.stalled_left_wheel = True
-        robot.advance(0.35)
-        assert robot.bumped and robot.stop_reason == "stall"
+        assert _advance_until(robot, lambda: robot.bumped)
+        assert robot.stop_reason == "stall"
         assert fake.wait_until(lambda: fake.commanded == (0.0, 0.0))
 
 
