@@ -27,6 +27,7 @@ COMMAND_MODULES = (
     "teach",
     "chat",
     "eval",
+    "doctor",
 )
 
 
