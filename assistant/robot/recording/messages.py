@@ -158,7 +158,8 @@ def camera_info_message(k: CameraIntrinsics, t_ns: int):
 
 
 def intrinsics_from_info(info) -> CameraIntrinsics:
-    K = np.asarray(info.k, dtype=float)
+    """Pinhole intrinsics of a ``CameraInfo`` (ROS 2 spells the matrix ``k``, ROS 1 ``K``)."""
+    K = np.asarray(info.k if hasattr(info, "k") else info.K, dtype=float)
     return CameraIntrinsics(int(info.width), int(info.height), float(K[0]), float(K[4]), float(K[2]), float(K[5]))
 
 
