@@ -27,9 +27,9 @@ from assistant.robot.errors import RobotConnectionError
 from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame, Odometry
 from assistant.robot.interface import Robot
 from assistant.robot.recording import messages as msgs
-from assistant.robot.recording.reader import (
-    COMMAND, END, FRAME, FRAME_POSE, INTRINSICS, MOUNT, ODOMETRY, TURN, Event, open_source,
-)
+from assistant.robot.recording.foreign import scaled_kinect_intrinsics
+from assistant.robot.recording.reader import COMMAND, END, FRAME, FRAME_POSE, INTRINSICS, MOUNT, ODOMETRY, TURN, Event
+from assistant.robot.recording.sources import open_source
 
 __all__ = ["RecordingEndedError", "ReplayRobot", "replay_robot_from_spec"]
 
@@ -134,8 +134,6 @@ class ReplayRobot(Robot):
         depth = event.value()
         intrinsics = self._intrinsics
         if intrinsics is None or (intrinsics.height, intrinsics.width) != depth.shape:
-            from assistant.robot.recording.foreign import scaled_kinect_intrinsics
-
             intrinsics = scaled_kinect_intrinsics(depth.shape)
         if self._frame_pose is not None and self._frame_pose[0] == event.t_ns:
             pose = self._frame_pose[1]

@@ -8,7 +8,8 @@
   :class:`~assistant.robot.replay.ReplayRobot` plays back as a robot.
 """
 
-from assistant.robot.recording.reader import Event, McapSource, RecordingError, open_source, read_events
+from assistant.robot.recording.reader import Event, McapSource, RecordingError
+from assistant.robot.recording.sources import open_source, read_events
 from assistant.robot.recording.recorder import RecordingRobot
 from assistant.robot.recording.writer import SessionWriter
 

@@ -4,7 +4,8 @@
 and other robots' ROS 2 recordings in MCAP storage — from the start, without the summary
 section, so a file cut by a crash reads up to its last complete message (``truncated`` then
 says so). Other formats (ROS 1 bags, ROS 2 bag folders, TUM RGB-D folders) are in
-:mod:`assistant.robot.recording.foreign`; :func:`open_source` picks the reader for a path.
+:mod:`assistant.robot.recording.foreign`; :func:`~assistant.robot.recording.sources.open_source`
+picks the reader for a path.
 
 Messages are recognised by their ROS type, not their topic name, so another robot's
 ``/camera/depth/image_raw`` and ``/odom`` work as well as the product's own topics; a
@@ -25,7 +26,7 @@ from assistant.errors import AssistantError
 from assistant.robot.recording import messages as msgs
 from assistant.robot.recording.writer import SESSION_END_METADATA, SESSION_METADATA
 
-__all__ = ["Event", "McapSource", "MessageDecoder", "RecordingError", "open_source", "read_events"]
+__all__ = ["Event", "McapSource", "MessageDecoder", "RecordingError"]
 
 #: event kinds, in the order events of one instant are applied
 FRAME, FRAME_POSE, INTRINSICS, MOUNT, ODOMETRY, COMMAND, TURN, END = (
@@ -189,27 +190,3 @@ class McapSource:
                     yield event
             elif isinstance(record, Metadata) and record.name == SESSION_END_METADATA:
                 yield Event(int(record.metadata.get("end_ns", 0)), END, None)
-
-
-def open_source(path: str | os.PathLike[str], **options):
-    """The reader for ``path``: an ``.mcap`` file, a ROS 1 ``.bag``, a ROS 2 bag folder
-    (``metadata.yaml``) or a TUM RGB-D folder (``depth.txt``)."""
-    target = Path(path)
-    if target.is_file() and target.suffix.lower() == ".mcap":
-        return McapSource(target, depth_topic=options.get("depth_topic"))
-    from assistant.robot.recording.foreign import BagSource, TumSource
-
-    if target.is_dir() and (target / "depth.txt").is_file():
-        return TumSource(target, **{k: v for k, v in options.items() if k != "depth_topic"})
-    if (target.is_file() and target.suffix.lower() == ".bag") or (target / "metadata.yaml").is_file():
-        return BagSource(target, **options)
-    if not target.exists():
-        raise RecordingError(f"no recording at {target}; give the path of an .mcap file, a ROS bag or a "
-                             "TUM RGB-D folder")
-    raise RecordingError(f"{target} is not a recording this product reads: an .mcap file, a ROS 1 .bag, a "
-                         "ROS 2 bag folder (with metadata.yaml) or a TUM RGB-D folder (with depth.txt)")
-
-
-def read_events(path: str | os.PathLike[str], **options) -> list[Event]:
-    """Every event of a recording in a list (for tests and small files)."""
-    return list(open_source(path, **options).events())
