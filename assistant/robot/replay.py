@@ -83,6 +83,19 @@ class ReplayRobot(Robot):
         """The dialogue turns recorded up to now: {t, speaker, text}."""
         return list(self._turns)
 
+    def frames(self) -> Iterator[DepthFrame]:
+        """Every depth frame from the current one to the end, in order, moving the replay's clock
+        to each (for browsing a recording; a task uses ``advance`` and ``depth_frame``)."""
+        self._require("read frames")
+        while True:
+            yield self.depth_frame()
+            current = self._frame_event
+            while self._pending is not None and self._frame_event is current:
+                self._now_ns = self._pending.t_ns
+                self._apply_until(self._now_ns)
+            if self._frame_event is current:
+                return
+
     # ---------------------------------------------------------------- hooks
     def _reset(self) -> None:
         self._events: Iterator[Event] | None = None

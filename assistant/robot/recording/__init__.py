@@ -10,7 +10,9 @@
 
 from assistant.robot.recording.reader import Event, McapSource, RecordingError
 from assistant.robot.recording.sources import open_source, read_events
+from assistant.robot.recording.summary import recording_summary
 from assistant.robot.recording.recorder import RecordingRobot
 from assistant.robot.recording.writer import SessionWriter
 
-__all__ = ["Event", "McapSource", "RecordingError", "RecordingRobot", "SessionWriter", "open_source", "read_events"]
+__all__ = ["Event", "McapSource", "RecordingError", "RecordingRobot", "SessionWriter", "open_source", "read_events",
+           "recording_summary"]
