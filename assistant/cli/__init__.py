@@ -26,6 +26,7 @@ COMMAND_MODULES = (
     "where",
     "teach",
     "chat",
+    "record",
     "eval",
     "doctor",
 )

@@ -107,9 +107,11 @@ class FetchRunner:
         return self._detector
 
     def run(self, text: str, world: str, scene: str = "original", perception: str = "sensed",
-            seed: int = 0, object_name: str | None = None, on_event=None) -> TrialOutcome:
+            seed: int = 0, object_name: str | None = None, on_event=None, robot=None) -> TrialOutcome:
         """One fetch; ``object_name`` overrides the plan's object for evaluation (the dev set
-        says which object the command is about)."""
+        says which object the command is about). ``robot``: an unconnected robot to use instead
+        of a new simulator (a recording or a replay); without the simulator's hit ids the
+        object is judged by the task's own result."""
         from assistant.executor.context import TaskContext
         from assistant.executor.fetch import FetchTask
         from assistant.executor.outcome import ExecutionStatus
@@ -127,16 +129,18 @@ class FetchRunner:
                                        detector=self.detector if perception == "sensed" else None)
         task = FetchTask(self.policies, object_detector=SimObjectDetector.for_scene(w.scene(scene)))
         path: list = []
-        with make_robot("sim", world=w, scene=scene, seed=seed, noise=self.noise) as robot:
+        if robot is None:
+            robot = make_robot("sim", world=w, scene=scene, seed=seed, noise=self.noise)
+        with robot:
             ctx = TaskContext.start(w, robot, source, max_sim_seconds=self.max_sim_seconds, on_event=on_event)
             result = task.run(ctx, plan)
             final_frame = robot.depth_frame()
-            true_pose = robot.ground_truth_pose
+            true_pose = getattr(robot, "ground_truth_pose", None)
         # ---- evaluation (ground truth from here on)
         obj = object_name or plan.object
         known = {o.name for o in w.scene(scene).objects}
         visibility = object_visibility(final_frame, obj if obj in known else None)
-        seen = is_visible(visibility)
+        seen = is_visible(visibility) if final_frame.hit_ids is not None else result.success
         if not result.success:
             failure = result.status.value
         elif not seen:
@@ -155,7 +159,8 @@ class FetchRunner:
                          "target_furniture": result.target_furniture, "recovered": result.recovered},
             "final_pose": None if result.final_pose is None else
             [round(result.final_pose.x, 3), round(result.final_pose.y, 3), round(result.final_pose.theta, 4)],
-            "true_final_pose": [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
+            "true_final_pose": None if true_pose is None else
+            [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
             "target_position": None if placed is None else [round(placed.x, 3), round(placed.y, 3)],
             "target_visible": visibility,
             "seen": [s.to_dict() for s in result.seen],
