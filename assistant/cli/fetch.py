@@ -44,7 +44,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.executor.trial import FetchRunner
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    runner = FetchRunner(grounder=args.grounder)
+    runner = FetchRunner(grounder=args.grounder, taught=True)
     if args.batch:
         def handle(request: dict) -> dict:
             unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
