@@ -116,7 +116,8 @@ class Services:
             if self._runner is None:
                 from assistant.executor.trial import FetchRunner
 
-                self._runner = FetchRunner(parser=self._parser) if self._parser is not None else FetchRunner()
+                self._runner = FetchRunner(parser=self._parser, taught=True) if self._parser is not None \
+                    else FetchRunner(taught=True)
             return self._runner
 
     def fetch(self, text: str, world: str, scene: str, on_event=None, stop=None, on_pose=None) -> FetchReport:

@@ -65,11 +65,13 @@ class TrialOutcome:
 class FetchRunner:
     """Shared, slow-to-build parts of fetch trials (parser, policies, detector), built on first
     use. ``grounder``: the grounding model name (None = the default); ``noise``: drive with the
-    simulator's odometry noise (the localizer corrects it)."""
+    simulator's odometry noise (the localizer corrects it); ``taught``: train the policies on
+    the user's taught demonstrations too (the product does, the evaluations do not)."""
 
     def __init__(self, grounder: str | None = None, noise: bool = True, policies=None, detector=None,
-                 parser=None, max_sim_seconds: float = 900.0):
+                 parser=None, max_sim_seconds: float = 900.0, taught: bool = False):
         self.grounder = grounder
+        self.taught = taught
         self.noise = noise
         self._policies = policies
         self._detector = detector
@@ -95,7 +97,7 @@ class FetchRunner:
         if self._policies is None:
             from assistant.policy.library import PolicyLibrary
 
-            self._policies = PolicyLibrary()
+            self._policies = PolicyLibrary(taught=self.taught)
         return self._policies
 
     @property

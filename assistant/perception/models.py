@@ -95,7 +95,7 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
     items = items if items is not None else study_items()
     key = models_key(method, features, plans, items)
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
-    if (models := read_cache(path)) is not None:
+    if (models := read_cache(path, PerceptionModels)) is not None:
         return models
     models = fit_models(training_database(plans, items), method, features)
     write_cache(path, models)
