@@ -50,6 +50,11 @@ class Floor:
     tilt_rad: float
     roll_rad: float
 
+    @property
+    def plane(self) -> np.ndarray:
+        """``(nx, ny, nz, d)``: the floor as n·p + d = 0 in camera coordinates (n up)."""
+        return np.append(self.normal_camera, self.height_m)
+
     def to_dict(self) -> dict:
         return {"height": round(float(self.height_m), 4),
                 "normal": [round(float(v), 5) for v in self.normal_camera],
@@ -238,7 +243,8 @@ def _support_scores(points: np.ndarray, normals: np.ndarray, d: np.ndarray,
 
 
 def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: float = 0.1,
-               near_m: float = 3.0, seed: int = 0, strong_support: float = 0.2) -> Floor | None:
+               near_m: float = 3.0, seed: int = 0, strong_support: float = 0.2,
+               previous: np.ndarray | None = None) -> Floor | None:
     """The floor plane of a camera-frame cloud, or None when no floor is visible.
 
     With a ``mount`` (camera height and tilt), RANSAC runs on the points within ``band_m`` of
@@ -246,6 +252,12 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     fewer than ``strong_support`` of the near points, and always without a mount, the lowest
     large upward plane is also searched for (:func:`_search_floor`), and the lower of the two
     planes wins.
+
+    ``previous`` (the plane ``(nx, ny, nz, d)`` of :attr:`Floor.plane` found in an earlier frame
+    from the same camera pose) is tried first, as a prediction: if the refit within ``band_m``
+    of it holds at least ``strong_support`` of the near points it is the floor and nothing is
+    searched (a camera that has not moved sees the same floor; one that has moved finds no
+    support in the band and the floor is found as without it).
 
     All points take part (fitting on a subset, tried for speed with a throw-away change, moved
     the floor of the real frames and changed what was detected; not kept, not reproducible by a
@@ -257,6 +269,10 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     range2 = np.einsum("ij,ij->i", pts, pts)
     near = np.compress(range2 < near_m ** 2, pts, axis=0)
     candidates = []
+    if previous is not None:
+        found = _refine(near, np.asarray(previous, dtype=float), band_m, seed)
+        if found is not None and found[1] >= max(MIN_FLOOR_POINTS, strong_support * len(near)):
+            return _floor_from_plane(*found, mount)
     if mount is not None:
         nominal = nominal_camera_to_floor(mount)
         # predicted plane in camera coordinates: n = R^T z, d = the camera height

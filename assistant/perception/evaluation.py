@@ -283,8 +283,11 @@ def _print(report: dict) -> None:
             for f in frames:
                 floor = f["floor"]
                 fl = f"floor {floor['height']:.2f} m, tilt {floor['tilt_deg']:.1f}°, roll {floor['roll_deg']:.1f}°" if floor else "no floor"
-                dets = ", ".join(d["category"] for d in f["detections"]) or f"none ({f['reason']})"
-                print(f"  {folder}/{f['file']}: {fl}; detections: {dets}")
+                dets = ", ".join(d["category"] + (" (partial)" if d["partial"] else "")
+                                 + (f" (unsure {d['confidence']:.2f})" if d.get("unsure") else "")
+                                 for d in f["detections"]) or f"none ({f['reason']})"
+                unknown = ", ".join(f"{u['best']} {u['probability']:.2f} ({u['why']})" for u in f.get("unknown", []))
+                print(f"  {folder}/{f['file']}: {fl}; detections: {dets}" + (f"; unknown: {unknown}" if unknown else ""))
                 for m in f.get("matches", []):
                     share = (f", {100 * m['in_range_share']:.1f} % within {report['settings']['range_m']:g} m"
                              if "in_range_share" in m else "")
