@@ -32,6 +32,7 @@ from typing import Callable
 import numpy as np
 
 from assistant.generation.types import ContentNode
+from assistant.world import load_catalogue
 
 __all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
            "select_content", "support_of", "wall_band"]
@@ -59,7 +60,7 @@ OUTER = ("front", "left", "back", "right")
 LISTENER_SHARE = 0.75
 #: support words that tell a table's size, understood by the grounder (``end table`` →
 #: nightstand → a small table); offered only when a table of the other size is in the room
-SIZE_WORDS = {"small table": "end table"}
+SIZE_WORDS = load_catalogue().words.support_names
 SIZE_PROBABILITY = 0.6
 #: weight of the uniqueness term: the share of look-alikes the selection rules out
 UNIQUENESS = 0.5

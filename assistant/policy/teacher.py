@@ -42,10 +42,8 @@ from assistant.geometry import Pose2D, angle_difference, point_in_polygon, wrap_
 from assistant.policy.demonstration import EnvironmentEntity
 from assistant.policy.freespace import FreeSpace
 from assistant.policy.rdt import RDT, parse_rdt
+from assistant.world import load_catalogue
 
-TABLE_CATEGORIES = ("small table", "large table")
-CATEGORY_OF_WORD = {"table": TABLE_CATEGORIES, "couch": ("couch",), "bed": ("bed",), "chair": ("chair",),
-                    "desk": ("large table",)}
 STANDOFF_M = 0.5      # robot centre to a table's edge when standing at it
 WALL_STANDOFF_M = 0.7  # robot centre to a wall's face
 CLEARANCE_M = 0.3     # a teacher's goal keeps the robot's centre this far from obstacles
@@ -72,7 +70,7 @@ def _centre(item: EnvironmentEntity) -> np.ndarray:
 
 
 def _of_word(environment, word: str) -> list[EnvironmentEntity]:
-    cats = CATEGORY_OF_WORD.get(word, (word,))
+    cats = load_catalogue().categories_of(word) or (word,)
     return [e for e in environment if e.kind == "short_term" and (e.category in cats or e.name == word)]
 
 
