@@ -45,7 +45,8 @@ def realdata_summary_line(summary: dict) -> str:
     for what, t in summary["labelled"].items():
         part = f"{what} {t['correct']}/{t['labelled']}"
         if t["in_range"] < t["labelled"]:
-            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range)"
+            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range"
+            part += f"; {t['out_of_range_partial']} beyond it reported as partial)" if t.get("out_of_range_partial") else ")"
         parts.append(part)
     parts.append(f"false beds/couches: {summary['false_beds_or_couches_in_negatives']} in the "
                  f"negatives, {summary['false_beds_or_couches_elsewhere']} elsewhere")
@@ -291,7 +292,8 @@ def _print(report: dict) -> None:
                 for m in f.get("matches", []):
                     share = (f", {100 * m['in_range_share']:.1f} % within {report['settings']['range_m']:g} m"
                              if "in_range_share" in m else "")
-                    print(f"      {m['object']}: {m.get('detected')} (pixels {m['pixels']}{share})")
+                    part = " (partial)" if m.get("partial") else ""
+                    print(f"      {m['object']}: {m.get('detected')}{part} (pixels {m['pixels']}{share})")
                 for b in f.get("boxes", []):
                     print(f"      {b['object']}: {b['detected']}")
         print("  " + realdata_summary_line(report["realdata"]["summary"]))

@@ -140,19 +140,21 @@ def summarise(report: dict) -> dict:
     s = {"frames": len(frames), "floor_found": sum(f["floor"] is not None for f in frames)}
     tally: dict = {}
 
-    def count(what: str, correct: bool, in_range: bool = True) -> None:
+    def count(what: str, correct: bool, in_range: bool = True, partial: bool = False) -> None:
         t = tally.setdefault(what, {"correct": 0, "labelled": 0, "in_range_correct": 0,
-                                    "in_range": 0})
+                                    "in_range": 0, "out_of_range_partial": 0})
         t["labelled"] += 1
         t["correct"] += bool(correct)
         t["in_range"] += bool(in_range)
         t["in_range_correct"] += bool(correct and in_range)
+        t["out_of_range_partial"] += bool(correct and partial and not in_range)
 
     false_elsewhere = 0
     for f in frames:
         taken: set[int] = set()
         for m in f.get("matches", []):
-            count(m["object"], m["correct"], m.get("in_range_share", 1.0) >= IN_RANGE_SHARE)
+            count(m["object"], m["correct"], m.get("in_range_share", 1.0) >= IN_RANGE_SHARE,
+                  m.get("partial", False))
             if m.get("detection") is not None and m["correct"]:
                 taken.add(m["detection"])
         for b in f.get("boxes", []):
@@ -213,6 +215,7 @@ def _score_sun(base: Path, frame_id: str, result, frame, range_m: float) -> dict
         if best is not None and np.linalg.norm(best[1][:2] - gt) < 1.0:
             d, centre, yaw, index = best
             row.update({"detected": d.category, "detection": index, "correct": d.category == wanted,
+                        "partial": bool(d.partial or d.beyond_range),
                         "position_error_m": round(float(np.linalg.norm(centre[:2] - gt)), 3)})
             if yaw is not None and wanted == "bed":
                 err = abs((yaw - obj["yaw_upright_rad"] + math.pi) % (2 * math.pi) - math.pi)
