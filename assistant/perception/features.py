@@ -171,17 +171,19 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
         mid = (across_hi + across_lo) / 2
         out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
     surface = out[2 * nbins + 3] if out[2 * nbins + 3] > 0 else 0.9 * out[2 * nbins]
-    out[2 * nbins + 9:2 * nbins + 11] = side_cues(points, surface, camera_xy)
+    out[2 * nbins + 9:2 * nbins + 11] = side_cues(points, surface, camera_xy, up)
     return out
 
 
-def side_cues(points: np.ndarray, surface_m: float, camera_xy=None, bearing_bin_rad: float = 0.03,
-              min_points: int = 2) -> tuple[float, float]:
+def side_cues(points: np.ndarray, surface_m: float, camera_xy=None, up: np.ndarray | None = None,
+              bearing_bin_rad: float = 0.03, min_points: int = 2) -> tuple[float, float]:
     """How an item's near side looks under its top surface at ``surface_m`` (a mattress, seat
     or table top), seen from ``camera_xy`` (floor frame, metres; the origin if None).
 
     Along each bearing from the camera (``bearing_bin_rad`` bins) the top's near edge is the
-    nearest point within 8 cm of the surface height or above it. Returns (``solid``, ``open``):
+    nearest point of the surface: within 8 cm of its height and, when ``up`` (a mask of the
+    upward-facing points) is given, facing up — a chair's back standing before a desk top is
+    not its edge. Returns (``solid``, ``open``):
     the share of bearings with points 8 cm above the floor to 20 cm under the surface within
     −20…+12 cm (horizontal) of that edge — a bed's, couch's or night stand's closed side — and
     the share of bearings where the points under the surface lie only farther than 25 cm behind
@@ -196,7 +198,9 @@ def side_cues(points: np.ndarray, surface_m: float, camera_xy=None, bearing_bin_
     b = np.floor(np.arctan2(dy, dx) / bearing_bin_rad).astype(int)
     b -= b.min()
     z = points[:, 2]
-    top = z > surface_m - 0.08
+    top = np.abs(z - surface_m) < 0.08
+    if up is not None and np.count_nonzero(top & up) >= min_points:
+        top &= up
     if top.sum() < min_points:
         return 0.0, 0.0
     edge = np.full(b.max() + 1, np.inf)

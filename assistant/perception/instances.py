@@ -212,14 +212,19 @@ def _lamp(cx, cy, z0, height):
 def _desk(length, width, height, o):
     """A work desk, front (the sitter's side) towards −y: a top on legs or end panels with
     open knee space under it, an optional drawer pedestal at one end, a modesty panel at the
-    back, ``monitors`` screens (and a keyboard) along the back edge."""
+    back or a cubicle ``partition`` (its height) behind it, ``monitors`` screens (and a
+    keyboard) along the back edge, and ``chairs`` office chairs pushed in at its front."""
     top_z = height - 0.03
     parts = [_box(0.0, 0.0, top_z, length, width, 0.03)]
     parts += _legs(length / 2, width / 2, top_z, o.get("legs", "square"))
     if o.get("pedestal"):
         parts.append(_box(length / 2 - 0.25, 0.0, 0.0, 0.42, width - 0.1, top_z))
-    if o.get("modesty", True):
+    if o.get("partition"):  # a cubicle partition along the back, from the floor up
+        parts.append(_box(0.0, width / 2 + 0.03, 0.05, length, 0.05, float(o["partition"]) - 0.05))
+    elif o.get("modesty", True):
         parts.append(_box(0.0, width / 2 - 0.04, top_z * 0.45, length - 0.1, 0.02, top_z * 0.55))
+    for x in np.linspace(-length / 4, length / 4, int(o.get("chairs", 0))):  # pushed in, facing +y
+        parts += _swivel_chair(x, -width / 2 + 0.05)
     n = int(o.get("monitors", 0))
     screen_w = min(0.6, 0.9 * length / max(n, 1))
     for x in np.linspace(-(n - 1) * screen_w / 2, (n - 1) * screen_w / 2, n) if n else []:
@@ -229,6 +234,14 @@ def _desk(length, width, height, o):
     if n:
         parts.append(_box(0.0, -width / 2 + 0.2, height, 0.45, 0.15, 0.03))
     return parts
+
+
+def _swivel_chair(cx, cy):
+    """An office chair at (cx, cy): a star base, a column, a seat at 0.48 m and a back on its
+    −y side (the sitter faces +y, the desk)."""
+    parts = [_box(cx, cy, 0.05, 0.6, 0.06, 0.05), _box(cx, cy, 0.05, 0.06, 0.6, 0.05),
+             _cyl(cx, cy, 0.1, 0.03, 0.33), _box(cx, cy, 0.43, 0.48, 0.46, 0.07)]
+    return parts + [_box(cx, cy - 0.24, 0.55, 0.44, 0.05, 0.5)]
 
 
 def _cabinet(length, width, height, o):
