@@ -184,7 +184,7 @@ class FurnitureDetector:
         analysis = analyse_frame(frame, self.params, use_mount=use_mount, previous_floor=previous)
         if pose_key is not None and analysis.floor is not None:
             self._floors.pop(pose_key, None)
-            self._floors[pose_key] = analysis.floor.plane
+            self._floors[pose_key] = analysis.floor
             while len(self._floors) > FLOOR_MEMORY:
                 self._floors.pop(next(iter(self._floors)))
         t1 = time.perf_counter()

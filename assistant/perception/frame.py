@@ -70,12 +70,12 @@ class FrameAnalysis:
 
 
 def analyse_frame(frame: DepthFrame, params: FrameParams = FrameParams(), *,
-                  use_mount: bool = True, previous_floor: np.ndarray | None = None) -> FrameAnalysis:
+                  use_mount: bool = True, previous_floor: Floor | None = None) -> FrameAnalysis:
     """Floor, samples and features of one frame.
 
     ``use_mount`` predicts the floor from the frame's mount (camera height and tilt); without
     it (a frame from disk with unknown height and tilt) the floor is searched for.
-    ``previous_floor`` (a :attr:`Floor.plane` of an earlier frame from the same camera pose) is
+    ``previous_floor`` (the :class:`Floor` of an earlier frame from the same camera pose) is
     tried before either (``cloud.find_floor``). open3d and numpy run with ``params.threads``
     threads meanwhile (see :class:`FrameParams`).
     """
@@ -104,7 +104,7 @@ def thread_limit(threads: int = 1):
 
 
 def _analyse(frame: DepthFrame, params: FrameParams, use_mount: bool,
-             previous_floor: np.ndarray | None = None) -> FrameAnalysis:
+             previous_floor: Floor | None = None) -> FrameAnalysis:
     t0, c0 = time.perf_counter(), time.process_time()
     empty = np.zeros((0, params.features.length))
     nothing = np.zeros(3)

@@ -66,10 +66,10 @@ def test_a_remembered_floor_is_reused_and_a_stale_one_falls_back_to_the_search()
     depth = floor_depth(1.25, 8.0, roll_deg=5.0)
     pts, _ = depth_to_points(depth, K, stride=1)
     searched = find_floor(pts, None)
-    reused = find_floor(pts, None, previous=searched.plane)
+    reused = find_floor(pts, None, previous=searched)
     assert reused.height_m == pytest.approx(searched.height_m, abs=0.005)
     assert float(reused.normal_camera @ searched.normal_camera) > math.cos(math.radians(0.5))
     # the camera moved 40 cm up: the remembered plane finds no support and the floor is searched
     higher = depth_to_points(floor_depth(1.65, 8.0, roll_deg=5.0), K, stride=1)[0]
-    moved = find_floor(higher, None, previous=searched.plane)
+    moved = find_floor(higher, None, previous=searched)
     assert moved.height_m == pytest.approx(1.65, abs=0.03)
