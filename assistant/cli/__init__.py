@@ -25,6 +25,7 @@ COMMAND_MODULES = (
     "where",
     "teach",
     "chat",
+    "listen",
     "eval",
 )
 

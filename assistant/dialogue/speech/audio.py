@@ -68,6 +68,8 @@ def read_audio(path, max_seconds: float = MAX_UTTERANCE_S) -> Audio:
     path = Path(path)
     if not path.is_file():
         raise AudioFileError(f"{path}: no such audio file; give a WAV file (16-bit PCM, any rate)")
+    if path.stat().st_size == 0:
+        raise AudioFileError(f"{path}: the file is empty (0 bytes); record the command again")
     try:
         info = sf.info(str(path))
     except Exception as error:  # libsndfile's error for anything it cannot parse
