@@ -35,13 +35,14 @@ FRAME_S = 0.01
 class PocketsphinxRecogniser(Recogniser):
     """``model``: a :class:`~assistant.dialogue.speech.language_model.HomeModel` (default: built
     from the corpus and the homes, cached); ``world``: add that world's words; ``open_fallback``:
-    use the general model when unsure; ``open_below``: the confidence under which it is tried.
+    use the general model when unsure; ``open_below``: the confidence under which it is tried;
+    ``open_margin``: how much more confident its words must be to be taken.
     """
 
     name = "pocketsphinx"
 
-    def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.5,
-                 settings: dict | None = None, asr_model=None):
+    def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.3,
+                 open_margin: float = 0.3, settings: dict | None = None, asr_model=None):
         if asr_model is not None:
             raise RecogniserError("pocketsphinx uses its packaged en-US model; --asr-model is for --asr vosk")
         ps = require("pocketsphinx", "pip install pocketsphinx", RecogniserError)
@@ -56,6 +57,7 @@ class PocketsphinxRecogniser(Recogniser):
                                   "delete it to rebuild it") from None
         self.open_fallback = open_fallback
         self.open_below = open_below
+        self.open_margin = open_margin
         self._open = None
         self._open_lock = threading.Lock()
         self._open_error: str | None = None
@@ -91,7 +93,7 @@ class PocketsphinxRecogniser(Recogniser):
             open_decoder = self._load_open()
             if open_decoder is not None:
                 other = _decode(open_decoder, pcm)
-                if other and _confidence(other) > _confidence(words):
+                if other and (not words or _confidence(other) > _confidence(words) + self.open_margin):
                     words, search = other, "open"
         transcript = " ".join(w for w, *_ in words)
         return Recognition(transcript, _confidence(words), audio_s, time.perf_counter() - start, self.name,

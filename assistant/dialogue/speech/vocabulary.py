@@ -34,6 +34,9 @@ HOUSEHOLD_OBJECTS = (
     "teddy bear", "hearing aid", "walking stick", "cane", "keyboard", "mouse", "speaker", "radio",
 )
 
+#: how many times more often the home's objects appear in the templates than everyday objects
+KNOWN_WEIGHT = 5
+
 #: what people say to the dialogue outside commands (see :mod:`assistant.dialogue.intents`)
 CONTROL_PHRASES = (
     "stop", "stop now", "stop it", "please stop", "halt", "wait", "hold on", "cancel", "never mind",
@@ -149,9 +152,11 @@ def corpus_sentences(paths=None) -> list[str]:
 
 def template_sentences(words: dict[str, list[str]]) -> list[str]:
     """The command templates filled with the home's words and the household objects."""
-    objects = list(dict.fromkeys([*words["objects"], *HOUSEHOLD_OBJECTS]))
-    out = [t.format(o=o) for o in objects for t in OBJECT_TEMPLATES]
     known = words["objects"]
+    others = [o for o in HOUSEHOLD_OBJECTS if o not in known]
+    # the home's objects weigh KNOWN_WEIGHT times an everyday object: heard as themselves first
+    out = [t.format(o=o) for o in known for t in OBJECT_TEMPLATES] * KNOWN_WEIGHT
+    out += [t.format(o=o) for o in others for t in OBJECT_TEMPLATES]
     for i, r in enumerate(words["rooms"]):
         for j, t in enumerate(PLACE_TEMPLATES):
             # a fixed rotation over objects and furniture keeps the text small and deterministic
