@@ -27,6 +27,7 @@ COMMAND_MODULES = (
     "teach",
     "chat",
     "record",
+    "listen",
     "eval",
     "doctor",
 )
