@@ -49,10 +49,6 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _pct(value: float) -> str:
-    return percent(value)
-
-
 def _row_names(key: str, result: dict) -> tuple[str, str]:
     if key == "cross_validation":
         return "training corpus", f"{result['folds']}-fold CV"
@@ -67,9 +63,9 @@ def print_report(report: dict) -> None:
         print(f"trained on {report['training_descriptions']} descriptions in "
               f"{report['training_seconds']:.1f} s")
     print_table(
-        [(name, how, r["descriptions"], r["words"], _pct(r["pos_accuracy"]),
-          _pct(r["chunk_accuracy"]), _pct(r["chunk_accuracy_gold_pos"]),
-          _pct(r["chunk_exact_match"])) for name, how, r in rows],
+        [(name, how, r["descriptions"], r["words"], percent(r["pos_accuracy"]),
+          percent(r["chunk_accuracy"]), percent(r["chunk_accuracy_gold_pos"]),
+          percent(r["chunk_exact_match"])) for name, how, r in rows],
         ["test set", "method", "descr.", "words", "POS acc", "chunk acc", "chunk acc (gold POS)",
          "chunk exact"],
     )
@@ -79,17 +75,17 @@ def print_report(report: dict) -> None:
             print(f"  {label:5s} " + ("; ".join(f"{c['gold']} → {c['predicted']} ×{c['count']}"
                                                for c in conf) or "none"))
         print("  chunk errors by construction (share of words): " + "; ".join(
-            f"{e['construction']} ×{e['count']} ({_pct(e['count'] / r['words'])})"
+            f"{e['construction']} ×{e['count']} ({percent(e['count'] / r['words'])})"
             for e in r["errors_by_construction"]))
         cov = r.get("coverage")
         if cov:
-            print(f"  not in the training corpus: {_pct(cov['unseen_path_word_share'])} of words "
+            print(f"  not in the training corpus: {percent(cov['unseen_path_word_share'])} of words "
                   f"have a label path never seen ("
                   + ", ".join(f"{u['path']} ×{u['words']}" for u in cov["unseen_paths"][:5])
-                  + f"); {_pct(cov['oov_token_share'])} of tokens are unseen words ("
+                  + f"); {percent(cov['oov_token_share'])} of tokens are unseen words ("
                   + ", ".join(f"{u['word']} ×{u['count']}" for u in cov["oov_words"][:8]) + ")")
             print("  label share test vs training: " + "; ".join(
-                f"{u['path']} {_pct(u['test'])} vs {_pct(u['train'])}"
+                f"{u['path']} {percent(u['test'])} vs {percent(u['train'])}"
                 for u in cov["path_share_shift"][:6]))
 
 
@@ -97,29 +93,29 @@ def print_consistency(path: str, r: dict) -> None:
     """One file's self-consistency report (``--consistency PATH``)."""
     print(f"{path}: {r['descriptions']} descriptions, {r['words']} words")
     print_table(
-        [(f"±{w['k']}", w["contexts"], _pct(w["ceiling"]), _pct(w["repeated_word_share"]),
-          _pct(w["repeated_agreement"]), _pct(l["accuracy"]))
+        [(f"±{w['k']}", w["contexts"], percent(w["ceiling"]), percent(w["repeated_word_share"]),
+          percent(w["repeated_agreement"]), percent(l["accuracy"]))
          for w, l in zip(r["window_ceiling"], r["leave_one_out_context"])],
         ["context (words+POS)", "contexts", "ceiling (in-sample majority)",
          "words in repeated contexts", "majority agreement there",
          "leave-one-out context majority"],
     )
     print("repeated n-grams (with POS), share of occurrences labelled as the n-gram's "
-          "majority: " + "; ".join(f"{g['n']}-grams {_pct(g['agreement'])} of "
+          "majority: " + "; ".join(f"{g['n']}-grams {percent(g['agreement'])} of "
                                    f"{g['occurrences']}" for g in r["ngram_agreement"]))
     d = r["duplicates"]
     print(f"identical descriptions: {d['groups']} groups ({d['descriptions']} descriptions), "
           f"{d['identical_pairs']}/{d['pairs']} pairs labelled identically, pairwise "
-          f"per-word agreement {_pct(d['pairwise_word_agreement'])}")
+          f"per-word agreement {percent(d['pairwise_word_agreement'])}")
     cv = r.get("cross_validation")
     if cv:
         print(f"within-file {cv['folds']}-fold CV (POS tagger + chunker trained on the other "
-              f"folds): POS {_pct(cv['pos_accuracy'])}, chunk {_pct(cv['chunk_accuracy'])} "
-              f"(gold POS {_pct(cv['chunk_accuracy_gold_pos'])}), exact "
-              f"{_pct(cv['chunk_exact_match'])}, {cv['seconds']:.0f} s")
+              f"folds): POS {percent(cv['pos_accuracy'])}, chunk {percent(cv['chunk_accuracy'])} "
+              f"(gold POS {percent(cv['chunk_accuracy_gold_pos'])}), exact "
+              f"{percent(cv['chunk_exact_match'])}, {cv['seconds']:.0f} s")
     print("conventions (label choices counted):")
     for name, counts in r["conventions"].items():
         total = sum(counts.values()) or 1
-        print(f"  {name}: " + ", ".join(f"{k} {v} ({_pct(v / total)})"
+        print(f"  {name}: " + ", ".join(f"{k} {v} ({percent(v / total)})"
                                         for k, v in list(counts.items())[:5]))
     print()

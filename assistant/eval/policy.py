@@ -42,7 +42,7 @@ def evaluate_layout(library, world_name: str, scene: str, rdts, trials: int, see
 
     import numpy as np
 
-    from assistant.geometry import Pose2D, angle_difference
+    from assistant.geometry import angle_difference
     from assistant.policy.demonstration import environment_from_world
     from assistant.policy.freespace import FreeSpace
     from assistant.policy.rdt import TABLE_5_1, TABLE_RDTS, RDT
