@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import require_text_or_batch, add_json_flag, emit_json, run_batch
+from assistant.cli.common import (MAX_SEED, add_json_flag, check_command_text, emit_json, request_int, require_text_or_batch,
+                                  run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -27,7 +28,7 @@ def register(subparsers) -> None:
                              "file's furniture (to separate language from perception errors)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed (odometry and depth noise)")
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (odometry and depth noise)")
     parser.add_argument("--robot", metavar="SPEC", default="sim",
                         help="sim (default) or replay:FILE.mcap — a recorded session (assistant record): "
                              "its home is the recording's unless --world says otherwise")
@@ -50,7 +51,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.executor.trial import FetchRunner
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    runner = FetchRunner(grounder=args.grounder)
+    runner = FetchRunner(grounder=args.grounder, taught=True)
     if args.batch:
         def handle(request: dict) -> dict:
             unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
@@ -59,11 +60,15 @@ def run(args: argparse.Namespace) -> int:
                                      "text, world, scene, perception, object, seed")
             if not request.get("text") or not request.get("world"):
                 raise AssistantError("a request needs 'text' and 'world'")
+            check_command_text(request["text"])
+            if not isinstance(request["world"], str):
+                raise AssistantError(f"world: expected a name, got {request['world']!r}")
             perception = request.get("perception", args.perception)
             if perception not in PERCEPTION_MODES:
                 raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
             return runner.run(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
-                              perception, int(request.get("seed", args.seed)), request.get("object")).data
+                              perception, request_int(request, "seed", args.seed, high=MAX_SEED),
+                              request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
     robot = _robot(args)
@@ -71,10 +76,11 @@ def run(args: argparse.Namespace) -> int:
         from assistant.world import world_names
 
         raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
+    text = check_command_text(" ".join(args.text))
     if args.record:
-        robot = _recording(robot, args)
+        robot = _recording(robot, args, text)
     view = _Viewer() if args.view else None
-    outcome = runner.run(" ".join(args.text), args.world, args.scene, args.perception, args.seed, args.object,
+    outcome = runner.run(text, args.world, args.scene, args.perception, args.seed, args.object,
                          on_event=view.on_event if view else None, robot=robot)
     if robot is not None and hasattr(robot, "command_report"):
         outcome.data["replay"] = robot.command_report()
@@ -106,13 +112,12 @@ def _robot(args):
     return robot
 
 
-def _recording(robot, args):
+def _recording(robot, args, text: str):
     """The run's robot (a new simulator like the runner's when None) wrapped in a recorder,
     connected, with the command's words as the dialogue's first turn."""
     from assistant.robot import make_robot
     from assistant.robot.recording import RecordingRobot
 
-    text = " ".join(args.text)
     if robot is None:
         robot = make_robot("sim", world=args.world, scene=args.scene, seed=args.seed, noise=True)
     metadata = {"spec": args.robot, "world": args.world, "scene": args.scene, "task": f"fetch: {text}", "fetch": text}
