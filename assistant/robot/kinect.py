@@ -174,7 +174,10 @@ class Kinect:
             process.kill()  # stuck in a USB call
             process.wait(timeout=5.0)
         for stream in (process.stdin, process.stdout):
-            stream.close()
+            try:
+                stream.close()
+            except OSError:  # a request still buffered for a worker that is gone
+                pass
 
     def __enter__(self) -> "Kinect":
         return self.connect()
