@@ -13,8 +13,8 @@ happens (:class:`~assistant.robot.recording.writer.SessionWriter`).
 The caller receives each reading *as the recording holds it* — depth in whole millimetres, times
 in whole nanoseconds, headings through a quaternion — so a replay of the file gives the caller
 exactly what the live session gave it, and a deterministic task makes the same decisions on the
-replay. (For the simulator this rounds depth to 1 mm, far below the Kinect's noise; a real
-Kinect already delivers whole millimetres.) Evaluation-only data (the simulator's hit ids) is
+replay. (Depth is whole millimetres already from a real Kinect and from the simulator's noise
+model; headings change in their last bits.) Evaluation-only data (the simulator's hit ids) is
 passed through but not recorded.
 """
 
