@@ -108,3 +108,12 @@ def test_fetch_on_the_recorded_fetch_makes_the_recorded_commands(capsys):
     report = data["replay"]
     assert report["issued"] == report["recorded"] == report["matched"] > 0
     assert data["final_pose"] == [3.309, 5.774, 0.8294]
+
+
+@pytest.mark.slow
+def test_perceive_on_a_sample_scan_finds_the_dinner_table(capsys):
+    """The real detector on the last frame of the recorded fetch: the robot faces the dinner table."""
+    data = _json(capsys, ["perceive", "--replay", str(SAMPLES / "apartment_fetch.mcap"), "--frame", "62", "--json"])
+    assert data["index"] == 62 and data["frame"] == "world"
+    tables = [d for d in data["detections"] if d["category"] == "large table"]
+    assert tables and abs(tables[0]["x"] - 4.2) < 0.3 and abs(tables[0]["y"] - 7.1) < 0.3
