@@ -24,10 +24,12 @@ OUT = ROOT / "sample_scans"
 #: the recordings' start time, fixed (2025-12-01 00:00 UTC) so a regenerated file is identical
 EPOCH = "1764547200"
 FETCH = "go into the living room, the laptop is on the dinner table"
+HK_FETCH = "go into the office, the mug is on the table in front of the couch"
 
 #: file name → the arguments of ``assistant record`` after ``--robot``
 SESSIONS: dict[str, list[str]] = {
     "apartment_fetch.mcap": ["sim:apartment", "--fetch", FETCH],
+    "hk-studio_fetch.mcap": ["sim:hk-studio", "--fetch", HK_FETCH],
     **{f"{home}_look_around.mcap": [f"sim:{home}", "--step-deg", "45"]
        for home in ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house", "training-home")},
 }
