@@ -94,6 +94,12 @@ class P3DX(Robot):
         sip = self._live_link().last_sip
         return None if sip is None else sip.battery_v
 
+    @property
+    def line_stats(self):
+        """The serial line's health: packets decoded, bad checksums, bytes skipped (DecoderStats)."""
+        self._require("read the line statistics")
+        return self._live_link().line_stats
+
     def sonar_m(self) -> dict[int, float]:
         """The latest sonar ranges (metres) by sonar number."""
         self._require("read the sonar")
@@ -151,8 +157,7 @@ class P3DX(Robot):
         angular = max(-p.max_angular_rad_s, min(p.max_angular_rad_s, angular_rad_s))
         link = self._live_link()
         command = (int(round(linear * 1000)), int(round(math.degrees(angular))))
-        sip = link.last_sip
-        if command != (0, 0) and sip is not None and not sip.motors_enabled:
+        if command != (0, 0) and link.motors_disabled:
             link.stop("motors disabled")
             raise MotorsDisabledError(self.name)
         link.drive(*command)

@@ -164,6 +164,7 @@ def test_reconnect_after_close_starts_a_new_session(fake, params):
 def test_disabled_motors_are_a_clear_error(params):
     with FakeArcosController(params, faults=Faults(motors_off=True)) as fake:
         with P3DX(fake.port, params=params) as robot:
+            robot.advance(2.0)  # past the controller's second to act on ENABLE
             with pytest.raises(MotorsDisabledError, match="MOTORS button"):
                 robot.send_velocity(0.2, 0.0)
             robot.stop()  # stopping is always allowed
