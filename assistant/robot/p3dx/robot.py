@@ -114,9 +114,11 @@ class P3DX(Robot):
             opener = getattr(self.camera, "connect", None) or getattr(self.camera, "open", None)
             if callable(opener) and not getattr(self.camera, "is_connected", False):
                 opener()
-        except BaseException:
+        except BaseException as error:
             self._link = None
             link.close()
+            log.error("%s: the camera did not start (%s); the base is closed again. To drive without "
+                      "it, use the robot spec p3dx:%s:nocamera", self.name, error, self.port)
             raise
         self._stop_reason = None
         _OPEN_ROBOTS.add(self)
