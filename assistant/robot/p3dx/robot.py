@@ -20,7 +20,6 @@ import dataclasses
 import logging
 import math
 import time
-import weakref
 from typing import Protocol, runtime_checkable
 
 from assistant.errors import AssistantError
@@ -35,7 +34,8 @@ __all__ = ["DepthCamera", "P3DX", "p3dx_robot_from_spec"]
 
 log = logging.getLogger(__name__)
 
-_OPEN_ROBOTS: "weakref.WeakSet[P3DX]" = weakref.WeakSet()
+#: every connected P3DX (strong references: a robot dropped without close() is still stopped at exit)
+_OPEN_ROBOTS: "set[P3DX]" = set()
 _POLL_S = 0.02
 
 

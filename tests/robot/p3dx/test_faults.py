@@ -165,7 +165,9 @@ _CLIENT = textwrap.dedent("""
     print("driving", flush=True)
     if sys.argv[2] == "crash":
         os._exit(3)          # no clean-up at all: only the controller's watchdog is left
-    sys.exit(0)              # a normal exit without close(): the atexit hook stops the base
+    del robot                # dropped without close() ...
+    import gc; gc.collect()
+    sys.exit(0)              # ... and a normal exit: the atexit hook still stops the base
 """)
 
 
