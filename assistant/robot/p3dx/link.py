@@ -299,7 +299,9 @@ class ArcosLink:
                     self._handle_sip(payload, now)
             silent_for = now - self._last_sip_at
             limit = p.link_watchdog_s if self._first_sip.is_set() else p.handshake_timeout_s
-            if silent_for > limit:
+            # judge once the line is drained (a thread the machine held up reads what queued
+            # meanwhile first), but never later than two watchdog periods
+            if silent_for > limit and (silent_for > 2 * limit or not self._pending()):
                 garbled = self._last_bytes_at > self._last_sip_at
                 self._fail("garbled data" if garbled else "silent controller",
                            f"no valid status packet for {silent_for:.2f} s"
@@ -372,6 +374,14 @@ class ArcosLink:
         with self._write_lock:
             port.write(encode_packet(payload))
             self._last_sent = time.monotonic()
+
+    def _pending(self) -> int:
+        """Bytes waiting in the port (0 when it cannot tell): a late thread reads them first."""
+        port = self._serial
+        try:
+            return port.in_waiting if port is not None else 0
+        except (OSError, _serial_exception()):
+            return 0
 
     def _read(self) -> bytes:
         port = self._serial
