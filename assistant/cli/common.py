@@ -101,6 +101,25 @@ def miss_probability(text: str) -> float:
     return value
 
 
+def robot_spec(text: str) -> str:
+    """Check a robot spec for argparse (``sim``, ``sim:WORLD[:SCENE]``, ``replay:PATH``,
+    ``p3dx:PORT``): an unknown kind is refused with the kinds the factory knows."""
+    from assistant.robot import parse_robot_spec
+
+    try:
+        return str(parse_robot_spec(text))
+    except AssistantError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+def add_robot_option(parser: argparse.ArgumentParser, default: str = "sim") -> None:
+    from assistant.robot import robot_schemes
+
+    parser.add_argument("--robot", type=robot_spec, default=default, metavar="SPEC",
+                        help=f"which robot acts: {', '.join(robot_schemes())} — sim (default; "
+                             "sim:WORLD[:SCENE] names the home), replay:PATH, p3dx:PORT")
+
+
 def add_json_flag(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 

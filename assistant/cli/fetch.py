@@ -1,11 +1,12 @@
-"""``assistant fetch TEXT --world NAME``: follow a fetch command in the simulator, from text to
-the final pose, and say whether the target object ends up in view."""
+"""``assistant fetch TEXT --world NAME``: follow a fetch command with a robot (the simulator by
+default), from text to the final pose, and say whether the target object ends up in view. The
+fetch itself is the application layer's (:meth:`assistant.app.Fetcher.fetch`)."""
 
 from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import require_text_or_batch, add_json_flag, emit_json, run_batch
+from assistant.cli.common import add_json_flag, add_robot_option, emit_json, require_text_or_batch, run_batch
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -28,10 +29,11 @@ def register(subparsers) -> None:
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
     parser.add_argument("--seed", type=int, default=0, help="simulator seed (odometry and depth noise)")
+    add_robot_option(parser)
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
                         "(default: the one the command names)")
     parser.add_argument("--batch", metavar="FILE",
-                        help="JSON lines {text, world, scene, perception[, object, seed]} ('-' for stdin); "
+                        help="JSON lines {text, world, scene, perception[, object, seed, robot]} ('-' for stdin); "
                              "one JSON object per line out")
     parser.add_argument("--view", action="store_true",
                         help="show the run in the 3D view (meshcat) and wait until Ctrl-C")
@@ -40,33 +42,38 @@ def register(subparsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from assistant.app import Fetcher
     from assistant.errors import AssistantError
-    from assistant.executor.trial import FetchRunner
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    runner = FetchRunner(grounder=args.grounder)
+    fetcher = Fetcher(grounder=args.grounder)
     if args.batch:
         def handle(request: dict) -> dict:
-            unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
+            unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind", "robot"}
             if unknown:
                 raise AssistantError(f"unknown key(s) {', '.join(sorted(unknown))}; a request has "
-                                     "text, world, scene, perception, object, seed")
+                                     "text, world, scene, perception, object, seed, robot")
             if not request.get("text") or not request.get("world"):
                 raise AssistantError("a request needs 'text' and 'world'")
             perception = request.get("perception", args.perception)
             if perception not in PERCEPTION_MODES:
                 raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
-            return runner.run(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
-                              perception, int(request.get("seed", args.seed)), request.get("object")).data
+            return fetcher.fetch(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
+                                 perception, robot=str(request.get("robot", args.robot)),
+                                 seed=int(request.get("seed", args.seed)), object_name=request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
+    if not args.world:
+        from assistant.app import spec_world
+
+        args.world = spec_world(args.robot)
     if not args.world:
         from assistant.world import world_names
 
         raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
     view = _Viewer() if args.view else None
-    outcome = runner.run(" ".join(args.text), args.world, args.scene, args.perception, args.seed, args.object,
-                         on_event=view.on_event if view else None)
+    outcome = fetcher.fetch(" ".join(args.text), args.world, args.scene, args.perception, robot=args.robot,
+                            seed=args.seed, object_name=args.object, on_event=view.on_event if view else None)
     if args.json:
         emit_json(outcome.data)
     else:

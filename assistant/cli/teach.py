@@ -1,12 +1,13 @@
-"""``assistant teach RDT --world NAME``: drive the simulated robot by keys and record a
-demonstration of an RDT node (dissertation 5.5.2)."""
+"""``assistant teach RDT --world NAME``: drive the robot (the simulator by default) by keys and
+record a demonstration of an RDT node (dissertation 5.5.2); the application layer's
+:func:`assistant.app.teach`."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
-from assistant.cli.common import add_json_flag, emit_json, parse_pose
+from assistant.cli.common import add_json_flag, add_robot_option, emit_json, parse_pose
 
 
 def register(subparsers) -> None:
@@ -25,21 +26,21 @@ def register(subparsers) -> None:
     parser.add_argument("--target", metavar="ID", help="target entity id (default: the teacher rule's pick)")
     parser.add_argument("--out", metavar="FILE",
                         help="demonstration file (default: corpus/demonstrations/RDT/WORLD-SCENE-keyboard-NN.json)")
+    add_robot_option(parser)
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from assistant.policy.teaching import run_teaching
+    from assistant.app import teach
 
-    outcome = run_teaching(args.rdt, args.world, args.scene, args.start, args.reference, args.target,
-                           args.out, echo=lambda text: print(text, file=sys.stderr))
+    result = teach(args.rdt, args.world, args.scene, robot=args.robot, start=args.start, reference=args.reference,
+                   target=args.target, out=args.out, echo=lambda text: print(text, file=sys.stderr))
+    d = result.to_dict()
     if args.json:
-        emit_json(outcome.to_dict())
-    elif outcome.saved is None:
-        print(f"aborted after {outcome.presses} key presses; nothing saved")
+        emit_json(d)
+    elif not result.success:
+        print(result.message)
     else:
-        d = outcome.to_dict()
-        print(f"saved {outcome.saved}: {d['frames']} frames, {outcome.presses} key presses, "
-              f"final pose {d['final_pose']}")
-    return 0 if outcome.saved is not None else 1
+        print(f"{result.message}: {d['frames']} frames, {d['presses']} key presses, final pose {d['final_pose']}")
+    return 0 if result.success else 1

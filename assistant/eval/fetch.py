@@ -3,7 +3,7 @@ Table 5-4).
 
 Every command of ``corpus/fetch_dev.jsonl`` ({text, world, scene, object, kind}) is run in the
 simulator from the world's start pose with sensed and/or oracle perception
-(:class:`~assistant.executor.trial.FetchRunner`); a trial succeeds when the target object
+(:meth:`assistant.app.Fetcher.fetch`, the product's own fetch); a trial succeeds when the target object
 covers at least 50 pixels of the final depth frame at a median distance of at most 4.5 m. The
 report gives the success rate and the failure counts per home and scene (Table 5-4's rows:
 not visible, parse, perception = reference not found, collision, ambiguous, no path, no room,
@@ -82,7 +82,8 @@ def run(args: argparse.Namespace) -> int:
     import statistics
 
     from assistant.cli.common import emit_json, print_table
-    from assistant.executor.trial import MAX_DISTANCE_M, MIN_PIXELS, FetchRunner
+    from assistant.app import Fetcher
+    from assistant.executor.trial import MAX_DISTANCE_M, MIN_PIXELS
 
     records = load_dev_set(args.dev_set)
     if args.world:
@@ -92,14 +93,14 @@ def run(args: argparse.Namespace) -> int:
     if args.limit is not None:
         records = records[: max(0, args.limit)]
     modes = ("sensed", "oracle") if args.perception == "both" else (args.perception,)
-    runner = FetchRunner(grounder=args.grounder)
+    fetcher = Fetcher(grounder=args.grounder)
     trials = []
     sink = open(args.trials, "w", encoding="utf-8") if args.trials else None
     try:
         for mode in modes:
             for record in records:
-                outcome = runner.run(record["text"], record["world"], record["scene"], mode, args.seed,
-                                     record["object"])
+                outcome = fetcher.fetch(record["text"], record["world"], record["scene"], mode, seed=args.seed,
+                                        object_name=record["object"])
                 data = {**outcome.data, "kind": record["kind"]}
                 trials.append(data)
                 if sink is not None:

@@ -18,7 +18,7 @@ detector), and the description is composed from the environment model that searc
     ``unique``: the stated room and relations hold for no other furniture with the support's
     word. ``recovered``: the parse found every relation the generator meant to say.
 (b) **listener** — each description is handed to the simulated robot as a fetch command
-    (``assistant fetch``'s runner, from the world's start pose, with sensed perception by
+    (the application layer's :meth:`~assistant.app.Fetcher.fetch`, ``assistant fetch``'s, from the world's start pose, with sensed perception by
     default, ``--listener-perception oracle`` to separate language from perception errors) and
     counts when the object ends up in the final camera view. ``--no-listener`` skips it.
 (c) **brevity and fluency** — word count, repeated phrases, and agreement with the corpus's
@@ -206,13 +206,12 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         from assistant.perception import FurnitureDetector
 
         furniture_detector = FurnitureDetector()
+    from assistant.app import Fetcher, Finder
+
+    finder = Finder(describer, furniture_detector)
     if listener:
-        try:
-            from assistant.executor.trial import FetchRunner
-            runner = FetchRunner(parser=parser, detector=furniture_detector) if parser is not None \
-                else FetchRunner(detector=furniture_detector)
-        except ImportError as error:
-            listener_note = f"not measured: assistant fetch is not available ({error})"
+        runner = Fetcher(parser=parser, detector=furniture_detector) if parser is not None \
+            else Fetcher(detector=furniture_detector)
     rows = []
     done: dict = {}
     t_start = time.perf_counter()
@@ -226,16 +225,11 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         heading = entry_heading(world.floorplan, room.name, listener_pose)
         search_row = None
         if search == "sensed":
-            from assistant.executor.search import search_for
-
-            found = (searches or {}).get((wname, scene, obj.name))
-            if found is None:
-                found = search_for(obj.name, world, scene, furniture_detector=furniture_detector,
-                                   miss_rate=miss_rate)
+            answer = finder.where_is(obj.name, world, scene, listener=listener_pose, miss_rate=miss_rate,
+                                     searched=(searches or {}).get((wname, scene, obj.name)))
+            found, result = answer.task, answer.description
             done[(wname, scene, obj.name)] = found
-            t0 = time.perf_counter()
-            result = describer.describe_search(found, world.floorplan, listener_pose=listener_pose)
-            compose_ms = (time.perf_counter() - t0) * 1000
+            compose_ms = result.composition_seconds * 1000
             error_m = (math.hypot(found.sighting.x_m - obj.x, found.sighting.y_m - obj.y)
                        if found.found else None)
             right_place = bool(found.found and found.sighting.room == room.name and error_m <= 0.3)
@@ -303,7 +297,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         fetched = None
         if runner is not None and result.found:
             try:
-                outcome = runner.run(text, wname, scene, listener_perception, object_name=obj.name)
+                outcome = runner.fetch(text, wname, scene, listener_perception, object_name=obj.name)
                 fetched = {"success": outcome.success, "failure": outcome.data.get("failure"),
                            "message": outcome.data["executor"]["message"],
                            "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),

@@ -5,7 +5,18 @@ import time
 
 import pytest
 
-from assistant.dialogue import DialogueManager, FetchReport, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory, Services
+
+
+def fetch_result(success: bool, furniture: str, obj: str = "mug", seen_objects=(), perceived=None):
+    """A fetch's application-layer result as the stand-in fetchers report it."""
+    from assistant.app import Result, Status
+
+    data = {"success": success, "failure": None if success else "not_visible", "final_pose": [1.0, 2.0, 0.0],
+            "executor": {"status": "success", "message": "facing the table",
+                         "target_furniture": {"id": furniture, "name": "table", "centre": [0, 0]}}}
+    return Result("fetch", Status.SUCCESS if success else Status.NOT_VISIBLE, "facing the table", data,
+                  seen=list(seen_objects), furniture=perceived, object=obj, object_seen=success)
 
 
 class StandInFetcher:
@@ -22,9 +33,7 @@ class StandInFetcher:
         while self.hold:
             time.sleep(0.01)
             on_event("move_to", {"goal": None})
-        return FetchReport(True if self.seen else False, None if self.seen else "not_visible", "facing the table",
-                           [1.0, 2.0, 0.0], {"id": self.furniture, "name": "table", "centre": [0, 0]},
-                           "mug", self.seen)
+        return fetch_result(bool(self.seen), self.furniture)
 
 
 @pytest.fixture(scope="module")

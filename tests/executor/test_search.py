@@ -5,7 +5,10 @@ from __future__ import annotations
 import pytest
 
 from assistant.executor.outcome import ExecutionStatus
-from assistant.executor.search import room_order, search_for
+from assistant.executor.context import TaskContext
+from assistant.executor.search import SEARCH_BUDGET_S, SearchTask, room_order
+from assistant.executor.sensing import SensedFurniture
+from assistant.perception.objects import SimObjectDetector
 from assistant.perception.objects import Sighting
 from assistant.world import load_world
 
@@ -15,6 +18,18 @@ def furniture_detector():
     from assistant.perception import FurnitureDetector
 
     return FurnitureDetector()
+
+
+def search_for(name, world, scene, furniture_detector, on_event=None, **params):
+    """The search task with the simulator (odometry noise on), sensed furniture and the
+    simulator's object detector, from the world's start."""
+    from assistant.sim import OdometryNoise, SimRobot
+
+    world = load_world(world) if isinstance(world, str) else world
+    with SimRobot(world, scene, seed=0, odometry_noise=OdometryNoise()) as robot:
+        ctx = TaskContext.start(world, robot, SensedFurniture(world, detector=furniture_detector),
+                                max_sim_seconds=SEARCH_BUDGET_S, on_event=on_event)
+        return SearchTask(SimObjectDetector.for_scene(world.scene(scene)), **params).run(ctx, name)
 
 
 @pytest.fixture(scope="module")
