@@ -91,8 +91,14 @@ def test_clarify_never_mind_and_ordinals(services, tmp_path):
     m.handle("get the statue from the table in the bedroom")
     assert m.handle("never mind").outcome == "cancelled"
     assert m.pending is None
+    asked = m.handle("get the statue from the table in the bedroom")
+    options = [o["id"] for o in asked.data["options"]]
+    assert sorted(options) == ["coffeetable_2", "hexagontable_1", "roundtable_2"]
+    # the second one offered, not just any table of the bedroom
+    assert m.handle("the second").data["chosen"] == options[1]
+    m.wait(10)
     m.handle("get the statue from the table in the bedroom")
-    assert m.handle("the second").data["chosen"] in {"roundtable_2", "coffeetable_2", "hexagontable_1"}
+    assert m.handle("the last one").data["chosen"] == options[-1]
     m.wait(10)
 
 
