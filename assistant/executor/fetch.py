@@ -43,7 +43,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from assistant.errors import UnknownNameError
-from assistant.executor.choosing import DIRECTION_ANGLES, NOTHING_SAID, PLACE_REFERENCES, WALL_ANGLES, PlaceChooser, Said
+from assistant.executor.choosing import NOTHING_SAID, PlaceChooser, Said
+from assistant.rdt import PLACE_REFERENCES
+from assistant.spatial.resolve import DIRECTION_ANGLES, WALL_ANGLES
 from assistant.executor.context import BudgetSpent, TaskContext, moved_enough
 from assistant.executor.entry import enter_room
 from assistant.executor.outcome import ExecutionResult, ExecutionStatus
@@ -405,14 +407,14 @@ class FetchTask:
     @staticmethod
     def _target_word(plan) -> str:
         if plan.nodes:
-            return plan.nodes[-1].target if plan.nodes[-1].target != "non" else "table"
+            return plan.nodes[-1].target if plan.nodes[-1].target != NO_TARGET else "table"
         return "table"
 
     @staticmethod
     def _toward(rdt, said_from: Pose2D) -> tuple[float, float] | None:
         """Where to look from when the robot itself is the reference ("on your right", or an
         unreferenced target after some steps): a few metres that way from where it was said."""
-        if rdt.reference not in ("robot", "room", "move", "wall"):
+        if rdt.reference_kind == "furniture":
             return None
         angles = WALL_ANGLES if rdt.reference == "wall" else DIRECTION_ANGLES
         turn = angles.get(rdt.direction, 0.0) / 2  # that side and ahead: the room lies ahead

@@ -36,24 +36,11 @@ def test_against_the_left_wall_is_the_desk_at_the_west_wall(studio):
     assert studio.choose_pair(RDT("wall", "right", "table"), "studio", DOOR, said=DESK)[1].id != "desk_2"
 
 
-def test_room_sides_are_seen_from_the_robot(studio):
-    desks = {e.id: e for e in studio.in_room("studio", "table")}
-    back = {k: studio.room_side_fit(e, DOOR, "back") for k, e in desks.items()}
-    left = {k: studio.room_side_fit(e, DOOR, "left") for k, e in desks.items()}
-    assert back["desk_2"] > back["desk_1"]  # the far end
-    assert left["desk_1"] > left["hexagontable_1"] and left["desk_2"] > left["hexagontable_1"]
-    # the same desks seen from the far end, looking back: the sides swap
-    turned = Pose2D(DOOR.x, DOOR.y, DOOR.theta + math.pi)
-    assert studio.room_side_fit(desks["desk_2"], turned, "back") < back["desk_2"]
-
-
 def test_every_pair_of_the_node_counts(studio):
     # "the desk next to the wooden chair at the back on the left": both desks have a chair
     beside = RDT("chair", "beside", "table")
     others = [RDT("room", "left", "table"), RDT("room", "back", "table")]
     assert studio.choose_pair(beside, "studio", DOOR, others, DESK)[1].id == "desk_2"
-    agreement = studio.agreement(others, "studio", studio.in_room("studio", "table"), DOOR)
-    assert agreement["desk_2"] == 1.0 and 0.3 <= agreement["desk_1"] < 1.0
 
 
 def test_the_back_wall_is_the_far_wall_as_one_enters(all_worlds):

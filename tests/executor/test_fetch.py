@@ -4,7 +4,6 @@ the parser; sensed perception is measured by `assistant eval fetch`, not here.""
 from __future__ import annotations
 
 import inspect
-import math
 
 import numpy as np
 import pytest
