@@ -47,6 +47,15 @@ class Services:
         self._warm: threading.Thread | None = None
         self.warm_error: str | None = None
 
+    def using(self, fetcher=None, searcher=None) -> "Services":
+        """A copy that shares this one's parser, describer and use cases but fetches with
+        ``fetcher`` and searches with ``searcher`` (None: the real ones) — stand-ins in tests,
+        without building the models again."""
+        copy = Services(self.perception, self._parser, self._describer, fetcher, self.seed, self.search_mode,
+                        searcher, self.robot)
+        copy._fetch_case, copy._finder = self._fetch_case, self._finder
+        return copy
+
     # ---------------------------------------------------------------- lazy parts
     def parser(self, world):
         """A :class:`~assistant.grounding.CommandParser` for ``world`` (trained layers shared)."""

@@ -46,7 +46,7 @@ def services():
 
 
 def make(services, tmp_path, fetcher, said=None):
-    services._fetcher = fetcher
+    services = services.using(fetcher=fetcher)
     return DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"),
                            say=(said.append if said is not None else None))
 

@@ -127,8 +127,7 @@ class StandInSearcher:
 
 
 def manager(services, tmp_path, fetcher=None, searcher=None, said=None):
-    services._fetcher = fetcher
-    services._searcher = searcher
+    services = services.using(fetcher=fetcher, searcher=searcher)
     services.search_mode = "sensed"
     return DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"),
                            say=(said.append if said is not None else None))
