@@ -24,6 +24,7 @@ EVALUATIONS = {
     "fetch": "assistant.cli.eval_fetch",
     "generation": "assistant.cli.eval_generation",
     "dialogue": "assistant.cli.eval_dialogue",
+    "speech": "assistant.cli.eval_speech",
 }
 
 

@@ -1,12 +1,13 @@
 """``assistant fetch TEXT --world NAME``: follow a fetch command with a robot (the simulator by
-default), from text to the final pose, and say whether the target object ends up in view. The
-fetch itself is the application layer's (:meth:`assistant.app.Fetcher.fetch`)."""
+default, or a replay), from text to the final pose, and say whether the target object ends up
+in view. The fetch itself is the application layer's (:meth:`assistant.app.Fetcher.fetch`)."""
 
 from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, add_robot_option, emit_json, require_text_or_batch, run_batch
+from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, check_command_text, emit_json, request_int,
+                                  require_text_or_batch, run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -28,12 +29,14 @@ def register(subparsers) -> None:
                              "file's furniture (to separate language from perception errors)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed (odometry and depth noise)")
-    add_robot_option(parser)
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (odometry and depth noise)")
+    add_robot_option(parser, help_="sim (default; sim:WORLD[:SCENE] names the home) or replay:FILE.mcap — a "
+                                   "recorded session (assistant record): its home is the recording's unless "
+                                   "--world says otherwise")
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
                         "(default: the one the command names)")
     parser.add_argument("--batch", metavar="FILE",
-                        help="JSON lines {text, world, scene, perception[, object, seed, robot]} ('-' for stdin); "
+                        help="JSON lines {text, world, scene, perception[, object, seed]} ('-' for stdin); "
                              "one JSON object per line out")
     parser.add_argument("--view", action="store_true",
                         help="show the run in the 3D view (meshcat) and wait until Ctrl-C")
@@ -46,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.errors import AssistantError
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    fetcher = Fetcher(grounder=args.grounder)
+    fetcher = Fetcher(grounder=args.grounder, taught=True)
     if args.batch:
         def handle(request: dict) -> dict:
             unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind", "robot"}
@@ -55,14 +58,19 @@ def run(args: argparse.Namespace) -> int:
                                      "text, world, scene, perception, object, seed, robot")
             if not request.get("text") or not request.get("world"):
                 raise AssistantError("a request needs 'text' and 'world'")
+            check_command_text(request["text"])
+            if not isinstance(request["world"], str):
+                raise AssistantError(f"world: expected a name, got {request['world']!r}")
             perception = request.get("perception", args.perception)
             if perception not in PERCEPTION_MODES:
                 raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
             return fetcher.fetch(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
                                  perception, robot=str(request.get("robot", args.robot)),
-                                 seed=int(request.get("seed", args.seed)), object_name=request.get("object")).data
+                                 seed=request_int(request, "seed", args.seed, high=MAX_SEED),
+                                 object_name=request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
+    robot = _robot(args)
     if not args.world:
         from assistant.app import spec_world
 
@@ -71,9 +79,12 @@ def run(args: argparse.Namespace) -> int:
         from assistant.world import world_names
 
         raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
+    text = check_command_text(" ".join(args.text))
     view = _Viewer() if args.view else None
-    outcome = fetcher.fetch(" ".join(args.text), args.world, args.scene, args.perception, robot=args.robot,
+    outcome = fetcher.fetch(text, args.world, args.scene, args.perception, robot=robot or args.robot,
                             seed=args.seed, object_name=args.object, on_event=view.on_event if view else None)
+    if robot is not None and hasattr(robot, "command_report"):
+        outcome.data["replay"] = robot.command_report()
     if args.json:
         emit_json(outcome.data)
     else:
@@ -81,6 +92,25 @@ def run(args: argparse.Namespace) -> int:
     if view is not None:
         view.finish(outcome)
     return 0
+
+
+def _robot(args):
+    """None for the simulator (the fetcher makes it from the spec); a replay for ``replay:FILE``, whose
+    recorded home and scene fill in --world and --scene when not given."""
+    from assistant.errors import AssistantError
+    from assistant.robot import make_robot, parse_robot_spec
+
+    spec = parse_robot_spec(args.robot)
+    if spec.scheme == "sim":
+        return None
+    if spec.scheme != "replay":
+        raise AssistantError(f"fetch runs on the simulator or a replay for now, not {spec.scheme}")
+    robot = make_robot(spec)
+    recorded = robot.metadata
+    args.world = args.world or recorded.get("world") or None
+    if recorded.get("scene") and args.scene == "original":
+        args.scene = recorded["scene"]
+    return robot
 
 
 def _print(d: dict) -> None:

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, add_robot_option, emit_json, miss_probability, parse_pose, run_batch
+from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, emit_json, miss_probability, parse_pose,
+                                  request_int, run_batch, seed_int)
 
 
 def register(subparsers) -> None:
@@ -41,7 +42,7 @@ def register(subparsers) -> None:
     parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",
                         help="sensed search: probability that the object detector misses a visible "
                              "object in a frame (default 0)")
-    parser.add_argument("--seed", type=int, default=0, help="sensed search: simulator seed")
+    parser.add_argument("--seed", type=seed_int, default=0, help="sensed search: simulator seed")
     add_robot_option(parser)
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="annotated corpus (XML + chunk-grounding CSV, files or folders) to "
@@ -75,8 +76,8 @@ def run(args: argparse.Namespace) -> int:
             return answer(request.get("object"), request.get("world"), request.get("scene", "original"),
                           listener, request.get("style"), request.get("question"),
                           search=request.get("search", args.search),
-                          miss_rate=float(request.get("miss_rate", args.miss_rate)),
-                          seed=int(request.get("seed", args.seed)),
+                          miss_rate=miss_probability(str(request.get("miss_rate", args.miss_rate))),
+                          seed=request_int(request, "seed", args.seed, high=MAX_SEED),
                           robot=str(request.get("robot", args.robot))).to_dict()
         return run_batch(args.batch, handle, json_requests=True)
     args.world = args.world or spec_world(args.robot)

@@ -81,7 +81,8 @@ class Services:
         """The fetch use case (sharing this session's parser when it has one)."""
         with self._lock:
             if self._fetch_case is None:
-                self._fetch_case = Fetcher(parser=self._parser) if self._parser is not None else Fetcher()
+                self._fetch_case = Fetcher(parser=self._parser, taught=True) if self._parser is not None \
+                    else Fetcher(taught=True)
             return self._fetch_case
 
     def finder(self) -> Finder:

@@ -121,17 +121,17 @@ def test_missing_room_is_asked(services, tmp_path):
 
 def test_where_without_memory_says_it_is_the_simulators_knowledge(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
-    services.search_mode = "oracle"
+    m.services.search_mode = "oracle"
     try:
         turn = m.handle("where is my glasses case")
     finally:
-        services.search_mode = "sensed"
+        m.services.search_mode = "sensed"
     assert turn.data["source"] == "simulator" and "simulator" in turn.reply
-    services.search_mode = "oracle"
+    m.services.search_mode = "oracle"
     try:
         dyn = m.handle("how do I get to my fork?")
     finally:
-        services.search_mode = "sensed"
+        m.services.search_mode = "sensed"
     assert dyn.data["style"] == "dynamic" and dyn.reply.lower().startswith("go into the living room")
 
 
