@@ -42,10 +42,13 @@ def describer():
 def test_rooms_are_ordered_from_the_start_room_then_nearest():
     world = load_world("apartment")
     order = room_order(world, "hallway")
-    assert order[0] == "hallway"
     assert sorted(order) == sorted(world.floorplan.room_names)
     # the bedroom's door is nearer the hallway than the living room's far side
-    assert room_order(world, "bedroom")[0] == "bedroom"
+    assert order == ["hallway", "bedroom", "living room"]
+    # from the bedroom the living room is reached through the hallway: the hallway comes next
+    assert room_order(world, "bedroom") == ["bedroom", "hallway", "living room"]
+    # no start room: the room whose centre is nearest the start point
+    assert room_order(world, None, (4.0, 4.0))[0] == "living room"
 
 
 def test_search_finds_the_object_and_reports_what_it_sees(furniture_detector):
