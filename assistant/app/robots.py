@@ -34,6 +34,8 @@ def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = Tru
     if not isinstance(spec, str):
         return spec
     parsed = parse_robot_spec(spec)
+    if parsed.scheme == "p3dx":  # a real base starts its odometry where the home's plan says it stands
+        return make_robot(parsed, start=start or world.start)
     if parsed.scheme != "sim":
         return make_robot(parsed)
     named = spec_world(str(parsed))
