@@ -13,6 +13,7 @@ import importlib
 import sys
 
 from assistant.errors import AssistantError
+from assistant.runtime import limit_openmp_threads
 
 #: Command modules under ``assistant.cli``, in the order ``--help`` lists them.
 COMMAND_MODULES = (
@@ -25,7 +26,10 @@ COMMAND_MODULES = (
     "where",
     "teach",
     "chat",
+    "record",
+    "listen",
     "eval",
+    "doctor",
 )
 
 
@@ -48,6 +52,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    limit_openmp_threads()
     from assistant.cli.common import join_negative_values
 
     parser = build_parser()

@@ -245,6 +245,29 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
+def stderr_progress(what: str, done: int | None = None, total: int | None = None) -> None:
+    """A progress hook (:class:`assistant.eval.progress.Progress`) that writes one line per call
+    to stderr: ``what``, then ``done/total`` when the stage is counted."""
+    count = "" if done is None else f" ({done}/{total})" if total is not None else f" ({done})"
+    sys.stderr.write(f"{what}{count}\n")
+    sys.stderr.flush()
+
+
+def quiet_progress(what: str, done: int | None = None, total: int | None = None) -> None:
+    """A progress hook that says nothing (``--json`` runs)."""
+
+
+def progress_for(args: argparse.Namespace):
+    """The progress hook of one command: quiet with ``--json`` (its stdout is read by programs
+    and its stderr often shown beside it), one line per step on stderr otherwise."""
+    return quiet_progress if getattr(args, "json", False) else stderr_progress
+
+
+def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:
+    """``value`` (a share, 0–1) as a percentage text; ``-`` for ``None``."""
+    return "-" if value is None else f"{100 * value:.{digits}f}{sign}"
+
+
 def print_table(rows: Iterable[Iterable[Any]], header: Iterable[str], stream=None) -> None:
     """Print a plain-text table with aligned columns."""
     stream = stream or sys.stdout

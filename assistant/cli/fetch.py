@@ -29,6 +29,9 @@ def register(subparsers) -> None:
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
     parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (odometry and depth noise)")
+    parser.add_argument("--robot", metavar="SPEC", default="sim",
+                        help="sim (default) or replay:FILE.mcap — a recorded session (assistant record): "
+                             "its home is the recording's unless --world says otherwise")
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
                         "(default: the one the command names)")
     parser.add_argument("--batch", metavar="FILE",
@@ -65,6 +68,7 @@ def run(args: argparse.Namespace) -> int:
                               request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
+    robot = _robot(args)
     if not args.world:
         from assistant.world import world_names
 
@@ -72,7 +76,9 @@ def run(args: argparse.Namespace) -> int:
     text = check_command_text(" ".join(args.text))
     view = _Viewer() if args.view else None
     outcome = runner.run(text, args.world, args.scene, args.perception, args.seed, args.object,
-                         on_event=view.on_event if view else None)
+                         on_event=view.on_event if view else None, robot=robot)
+    if robot is not None and hasattr(robot, "command_report"):
+        outcome.data["replay"] = robot.command_report()
     if args.json:
         emit_json(outcome.data)
     else:
@@ -80,6 +86,25 @@ def run(args: argparse.Namespace) -> int:
     if view is not None:
         view.finish(outcome)
     return 0
+
+
+def _robot(args):
+    """None for the simulator (the runner makes it); a replay for ``replay:FILE``, whose
+    recorded home and scene fill in --world and --scene when not given."""
+    from assistant.errors import AssistantError
+    from assistant.robot import make_robot, parse_robot_spec
+
+    spec = parse_robot_spec(args.robot)
+    if spec.scheme == "sim":
+        return None
+    if spec.scheme != "replay":
+        raise AssistantError(f"fetch runs on the simulator or a replay for now, not {spec.scheme}")
+    robot = make_robot(spec)
+    recorded = robot.metadata
+    args.world = args.world or recorded.get("world") or None
+    if recorded.get("scene") and args.scene == "original":
+        args.scene = recorded["scene"]
+    return robot
 
 
 def _print(d: dict) -> None:

@@ -127,7 +127,7 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
     if style is None:
         style = style_for_question(question) if question else "static"
     if search == "sensed":
-        from assistant.generation import search_for
+        from assistant.executor.search import search_for
 
         shared = {} if shared is None else shared
         if "furniture_detector" not in shared:

@@ -32,7 +32,7 @@ READABLE_VERSIONS = (1, 2)
 
 
 @dataclass
-class Sighting:
+class MemoryEntry:
     """One remembered object: ``time_s`` is seconds since the epoch."""
 
     object: str
@@ -50,7 +50,7 @@ class Sighting:
         return asdict(self)
 
     @classmethod
-    def from_dict(cls, item) -> "Sighting":
+    def from_dict(cls, item) -> "MemoryEntry":
         """A sighting read from a memory file; ValueError names the first bad field."""
         if not isinstance(item, dict):
             raise ValueError(f"expected an object, got {type(item).__name__}")
@@ -130,14 +130,14 @@ class ObjectMemory:
         self.clock = clock
         self.session_start_s = float(clock())
         self.load_problem: str | None = None
-        self._items: dict[tuple[str, str], Sighting] = {}
+        self._items: dict[tuple[str, str], MemoryEntry] = {}
         self._forgotten: dict[tuple[str, str], float] = {}  # key -> when this session forgot it
         self._synced: dict[tuple[str, str], float] = {}  # the file as last read or written: key -> time_s
         self._lock = threading.Lock()
         if self.path is not None and self.path.exists():
             self._load()
 
-    def _read_file(self) -> tuple[dict[tuple[str, str], Sighting], list[str]]:
+    def _read_file(self) -> tuple[dict[tuple[str, str], MemoryEntry], list[str]]:
         """The file's sightings and the problems of the entries skipped; ValueError/OSError
         when the file as a whole cannot be read."""
         data = json.loads(self.path.read_text(encoding="utf-8"))
@@ -146,11 +146,11 @@ class ObjectMemory:
         sightings = data.get("sightings", [])
         if not isinstance(sightings, list):
             raise ValueError("sightings: expected a list")
-        items: dict[tuple[str, str], Sighting] = {}
+        items: dict[tuple[str, str], MemoryEntry] = {}
         problems: list[str] = []
         for i, item in enumerate(sightings):
             try:
-                s = Sighting.from_dict(item)
+                s = MemoryEntry.from_dict(item)
             except (TypeError, ValueError) as error:
                 problems.append(f"sightings[{i}]: {error}")
                 continue
@@ -223,10 +223,10 @@ class ObjectMemory:
     def remember(self, world: str, name: str, room: str | None, furniture: str | None = None,
                  furniture_word: str | None = None, phrase: str | None = None,
                  time_s: float | None = None, source: str = "fetch", x_m: float | None = None,
-                 y_m: float | None = None, save: bool = True) -> Sighting:
+                 y_m: float | None = None, save: bool = True) -> MemoryEntry:
         """Store (or replace) where ``name`` was seen, and save (unless ``save`` is False:
         several changes, then one :meth:`save`)."""
-        s = Sighting(name, world, room, furniture, furniture_word, phrase,
+        s = MemoryEntry(name, world, room, furniture, furniture_word, phrase,
                      self.clock() if time_s is None else float(time_s), source,
                      None if x_m is None else round(float(x_m), 3), None if y_m is None else round(float(y_m), 3))
         with self._lock:
@@ -236,7 +236,7 @@ class ObjectMemory:
             self.save()
         return s
 
-    def recall(self, world: str, name: str) -> Sighting | None:
+    def recall(self, world: str, name: str) -> MemoryEntry | None:
         with self._lock:
             return self._items.get((world, name))
 
@@ -246,15 +246,15 @@ class ObjectMemory:
             self._forgotten[(world, name)] = float(self.clock())
         self.save()
 
-    def sightings(self, world: str | None = None) -> list[Sighting]:
+    def sightings(self, world: str | None = None) -> list[MemoryEntry]:
         with self._lock:
             return [s for s in self._items.values() if world is None or s.world == world]
 
-    def from_earlier_session(self, sighting: Sighting) -> bool:
+    def from_earlier_session(self, sighting: MemoryEntry) -> bool:
         """True when ``sighting`` was made before this memory was opened (another session)."""
         return sighting.time_s < self.session_start_s
 
-    def age(self, sighting: Sighting) -> str:
+    def age(self, sighting: MemoryEntry) -> str:
         """"3 minutes ago" for a sighting of this session; "earlier today", "yesterday" or
         "on 28 November" for one of an earlier session."""
         now = self.clock()

@@ -43,6 +43,10 @@ class ChatSession:
         self._leaving = False
         self.interactive = self.stdin.isatty()
         self.records: list[dict] = []
+        # hooks for other front ends (speech): where utterances come from, and who else hears
+        # what the robot says; None: the terminal alone
+        self.read_line = None  # () -> str, raising EOFError at the end
+        self.speak = None  # (sentence) -> None
         self.manager = DialogueManager(self.world, self.scene, self.services, self.memory, say=self._progress,
                                        on_finish=self._finished)
         if getattr(args, "view", False):
@@ -64,7 +68,25 @@ class ChatSession:
             self.out.flush()
 
     def _progress(self, sentence: str) -> None:
-        self._print(f"robot: {sentence}", redraw=True)
+        self._say(sentence, redraw=True)
+
+    def show(self, text: str) -> None:
+        """Print a line of the session (a front end's note, e.g. what speech input heard)."""
+        self._print(text, redraw=True)
+
+    def say(self, sentence: str) -> None:
+        """The robot says ``sentence``: printed, and passed to the ``speak`` hook."""
+        self._say(sentence, redraw=True)
+
+    def _say(self, sentence: str, redraw: bool = False, label: str = "robot: ") -> None:
+        """Print what the robot says (and pass it to the ``speak`` hook)."""
+        self._print(f"{label}{sentence}", redraw=redraw)
+        if self.speak is not None:
+            try:
+                self.speak(sentence)
+            except Exception as error:  # speech out failing must not end the chat
+                self.speak = None
+                self._print(f"(speech output off: {error})")
 
     def _finished(self, turn: Turn) -> None:
         self._record(turn)
@@ -128,6 +150,8 @@ class ChatSession:
             pass
 
     def _read(self) -> str:
+        if self.read_line is not None:
+            return self.read_line()
         if self.interactive:
             return input(PROMPT)
         self.out.write(PROMPT)
@@ -140,7 +164,7 @@ class ChatSession:
     def loop(self) -> int:
         self.services.warm_up(self.world, background=True, scene=self.scene)
         readline = self._setup_readline()
-        self._print(self.manager.greeting())
+        self._say(self.manager.greeting(), label="")
         if self.memory.load_problem:
             self._print(f"(memory: {self.memory.load_problem})")
         self._print("(Ctrl-C stops the robot, Ctrl-C twice leaves, Ctrl-D leaves; transcript: "
@@ -171,7 +195,7 @@ class ChatSession:
                     turn = self.manager.handle(line)
                     self._record(turn)
                     if turn.reply:
-                        self._print(f"robot: {turn.reply}")
+                        self._say(turn.reply)
                     if turn.action == "teach" and turn.outcome == "started":
                         self._teach(turn)
                 except KeyboardInterrupt:  # Ctrl-C without the watcher (not the main thread)

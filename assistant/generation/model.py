@@ -20,7 +20,7 @@ import hashlib
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from assistant.errors import AssistantError
+from assistant.errors import AssistantError, NotFittedError
 
 __all__ = ["RELATIONS", "INVERSE", "GenerationModel", "GenerationModelNotFittedError",
            "chunk_key", "infer_kind", "load_generation_model", "template_from_chunk"]
@@ -39,8 +39,8 @@ MODEL_VERSION = 5
 SLOT_OBJECT, SLOT_SUPPORT, SLOT_REF, SLOT_ROOM = "{object}", "{support}", "{ref}", "{room}"
 
 
-class GenerationModelNotFittedError(AssistantError, RuntimeError):
-    """The generation model was used before ``fit``."""
+#: the one :class:`~assistant.errors.NotFittedError` (this name kept for callers)
+GenerationModelNotFittedError = NotFittedError
 
 
 def chunk_key(label: str, grounding, pos: tuple[str, ...] = ()) -> str | None:
@@ -255,7 +255,7 @@ class GenerationModel:
 
 
 # ---------------------------------------------------------------------------------- loading
-def _corpus_files(corpus_paths=None) -> tuple[list[Path], list[Path]]:
+def corpus_files(corpus_paths=None) -> tuple[list[Path], list[Path]]:
     """(XML files, chunk-grounding CSV files) of the corpus (``--corpus`` or the repository's)."""
     from assistant.language.corpus import default_corpus_paths
 
@@ -288,7 +288,7 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
     XML file is paired with the CSV whose name shares its stem, else the first CSV."""
     from assistant.fileio import cache_dir, read_cache, write_cache
 
-    xmls, csvs = _corpus_files(corpus_paths)
+    xmls, csvs = corpus_files(corpus_paths)
     digest = hashlib.sha256(f"generation-v{MODEL_VERSION}".encode())
     for p in xmls + csvs:
         digest.update(p.name.encode())

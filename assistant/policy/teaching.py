@@ -51,11 +51,15 @@ class TeachOutcome:
 
 
 class Teaching:
-    """One teaching session: the world, the robot, the RDT's reference and target."""
+    """One teaching session: the world, the robot, the RDT's reference and target.
+
+    ``robot``: an unconnected robot to drive (default: the simulator in ``world``/``scene`` at
+    ``start``, made by :func:`~assistant.robot.make_robot`); the session connects and closes it.
+    """
 
     def __init__(self, rdt: str, world: str, scene: str = "original", start=None,
-                 reference: str | None = None, target: str | None = None, seed: int = 0):
-        from assistant.sim import SimRobot
+                 reference: str | None = None, target: str | None = None, seed: int = 0, robot=None):
+        from assistant.robot import make_robot
         from assistant.world import load_world
 
         self.rdt = RDT.parse(rdt)
@@ -69,7 +73,8 @@ class Teaching:
 
                 raise UnknownNameError(f"{role} (furniture, room:NAME or wall:I:ROOM)", ident, sorted(ids))
         start_pose = Pose2D(*start) if start is not None else self.world.start
-        self.robot = SimRobot(self.world, self.scene, start=start_pose, seed=seed)
+        self.robot = robot if robot is not None else make_robot("sim", world=self.world, scene=self.scene,
+                                                                start=start_pose, seed=seed)
         self.robot.connect()
         self.session = KeyboardSession(self.robot)
         self.reference_id, self.target_id = reference, target
@@ -210,10 +215,13 @@ def check_out_path(out: str | Path | None) -> None:
 
 def run_teaching(rdt: str, world: str, scene: str = "original", start=None, reference=None, target=None,
                  out=None, stdin=None, interactive: bool | None = None, echo=None,
-                 accept_outlier: bool = False) -> TeachOutcome:
+                 accept_outlier: bool = False, robot=None) -> TeachOutcome:
+    """One teaching session driven by keys: a curses view in a terminal, else one key per line
+    of ``stdin``. ``robot``: see :class:`Teaching`; ``accept_outlier``: save a demonstration
+    that ends far from what was learned before without asking."""
     check_out_path(out)
     stdin = stdin or sys.stdin
-    teaching = Teaching(rdt, world, scene, start, reference, target)
+    teaching = Teaching(rdt, world, scene, start, reference, target, robot=robot)
     teaching.accept_outlier = accept_outlier
     if interactive is None:
         interactive = stdin.isatty() and sys.stdout.isatty()
