@@ -57,6 +57,12 @@ def main(argv: list[str] | None = None) -> int:
 
     parser = build_parser()
     args = parser.parse_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    import assistant.progress as progress
+
+    # training on first use shows its progress on a terminal; quiet with --json or in a pipe
+    json_output = bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
+    terminal = not json_output and sys.stderr.isatty()
+    progress.set_hook(progress.TerminalProgress() if terminal else progress.quiet)
     try:
         return int(args.handler(args) or 0)
     except AssistantError as error:
@@ -67,3 +73,5 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     except BrokenPipeError:  # e.g. `assistant world apartment --json | head`
         return 0
+    finally:
+        progress.set_hook(None)

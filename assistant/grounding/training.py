@@ -116,7 +116,10 @@ def train_grounder(name: str = DEFAULT_GROUNDER, corpus_paths=None, *, use_cache
                              + ("; ".join(labels.problems[:3]) or "the files are empty"))
     for problem in labels.problems[:5]:
         log.warning("%s", problem)
-    grounder.fit(labels.records, labels.groundings)
+    from assistant.progress import working
+
+    with working(f"training the {name} grounder (first use; cached after)"):
+        grounder.fit(labels.records, labels.groundings)
     grounder.training_files_ = [str(p) for p in csvs]
     if use_cache:
         write_cache(cache_file, grounder)
