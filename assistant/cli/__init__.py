@@ -30,6 +30,7 @@ COMMAND_MODULES = (
     "listen",
     "eval",
     "doctor",
+    "warmup",
 )
 
 
