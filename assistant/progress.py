@@ -66,6 +66,7 @@ class TerminalProgress:
     def __call__(self, what: str, done: int | None = None, total: int | None = None) -> None:
         from tqdm import tqdm
 
+        _shown.set()
         with self._lock:
             if what != self._what or self._bar is None or (total is not None and self._bar.total != total):
                 self._end()
@@ -108,6 +109,7 @@ class TerminalProgress:
 
 
 _hook: Hook | None = None
+_shown = threading.Event()  # a progress display has been drawn (a heartbeat then stands aside)
 
 
 def set_hook(hook: Hook | None) -> None:
@@ -170,3 +172,46 @@ def counted(items: Iterable[T], what: str, total: int | None = None) -> Iterator
     finally:
         if hasattr(hook, "close"):
             hook.close()
+
+
+class Heartbeat:
+    """For a command that may work a while before it prints: after ``delay_s`` without an end,
+    a terminal line ``what … 00:05`` ticks until :meth:`stop` (then it is erased), so no wait
+    is silent. Does nothing when ``stream`` is not a terminal."""
+
+    def __init__(self, what: str, delay_s: float = 2.0, stream=None):
+        self.what = what
+        self.delay_s = delay_s
+        self.stream = stream or sys.stderr
+        self._done = threading.Event()
+        self._thread: threading.Thread | None = None
+
+    def start(self) -> "Heartbeat":
+        _shown.clear()
+        try:
+            terminal = self.stream.isatty()
+        except (AttributeError, ValueError):
+            terminal = False
+        if terminal:
+            self._thread = threading.Thread(target=self._run, name="progress-heartbeat", daemon=True)
+            self._thread.start()
+        return self
+
+    def _run(self) -> None:
+        if self._done.wait(self.delay_s) or _shown.is_set():
+            return
+        from tqdm import tqdm
+
+        started = time.monotonic() - self.delay_s
+        bar = tqdm(total=None, desc=self.what, file=self.stream, leave=False, dynamic_ncols=True,
+                   bar_format="{desc} … {elapsed}", initial=0)
+        bar.start_t = bar._time() - (time.monotonic() - started)  # count from the command's start
+        while not self._done.wait(TICK_S) and not _shown.is_set():
+            with contextlib.suppress(Exception):
+                bar.refresh()
+        bar.close()
+
+    def stop(self) -> None:
+        self._done.set()
+        if self._thread is not None:
+            self._thread.join(timeout=1.0)

@@ -56,26 +56,29 @@ def first_reply(data_dir: str) -> float:
         child.close(force=True)
 
 
-def longest_silence(command: list[str], env: dict) -> tuple[float, float, int]:
-    """(longest gap between outputs, total seconds, exit status) of ``command`` on a pty."""
+def longest_silence(command: list[str], env: dict) -> tuple[float, float, int, str]:
+    """(longest gap between outputs, total seconds, exit status, what was printed after the
+    gap) of ``command`` on a pty."""
     child = pexpect.spawn(command[0], command[1:], env=env, encoding="utf-8", timeout=None,
                           dimensions=(40, 200))
     start = last = time.monotonic()
-    longest = 0.0
+    longest, after = 0.0, ""
     while True:
         try:
-            child.read_nonblocking(4096, timeout=0.05)
+            text = child.read_nonblocking(4096, timeout=0.05)
             now = time.monotonic()
-            longest = max(longest, now - last)
+            if now - last > longest:
+                longest, after = now - last, text
             last = now
         except pexpect.TIMEOUT:
             continue
         except pexpect.EOF:
             break
     end = time.monotonic()
-    longest = max(longest, end - last)
+    if end - last > longest:
+        longest, after = end - last, "(the end)"
     child.close()
-    return longest, end - start, child.exitstatus if child.exitstatus is not None else -1
+    return longest, end - start, child.exitstatus if child.exitstatus is not None else -1, after
 
 
 def main() -> int:
@@ -99,12 +102,12 @@ def main() -> int:
     cache = tempfile.mkdtemp(prefix="fresh-cache-") if args.fresh_cache else None
     try:
         env = _env({"ASSISTANT_CACHE": cache} if cache else None)
-        longest, total, status = longest_silence(command, env)
+        longest, total, status, after = longest_silence(command, env)
     finally:
         if cache:
             shutil.rmtree(cache, ignore_errors=True)
     print(f"longest silence {longest:.2f} s in {total:.1f} s (exit {status}; target <= 3 s): "
-          f"{' '.join(args.command)}")
+          f"{' '.join(args.command)}\n  the longest silence ended with: {after.strip()[:120]!r}")
     return 0
 
 

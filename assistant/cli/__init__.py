@@ -34,6 +34,10 @@ COMMAND_MODULES = (
 )
 
 
+#: commands that talk with the person (a terminal line ticking beside them would be in the way)
+INTERACTIVE_COMMANDS = frozenset({"chat", "teach", "record"})
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assistant",
@@ -64,6 +68,10 @@ def main(argv: list[str] | None = None) -> int:
     json_output = bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
     terminal = not json_output and sys.stderr.isatty()
     progress.set_hook(progress.TerminalProgress() if terminal else progress.quiet)
+    # a command that works a while before it prints says so (not the interactive ones)
+    heartbeat = progress.Heartbeat(f"assistant {args.command}")
+    if terminal and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
+        heartbeat.start()
     try:
         return int(args.handler(args) or 0)
     except AssistantError as error:
@@ -75,4 +83,5 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # e.g. `assistant world apartment --json | head`
         return 0
     finally:
+        heartbeat.stop()
         progress.set_hook(None)

@@ -8,7 +8,6 @@ cached for every later command (``~/.cache/assistant``).
 from __future__ import annotations
 
 import argparse
-import sys
 import time
 
 from assistant.cli.common import add_json_flag, emit_json
@@ -28,6 +27,7 @@ def register(subparsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from assistant.dialogue.services import Services
+    from assistant.progress import working
     from assistant.world import load_world
 
     world = load_world(args.world)
@@ -41,14 +41,10 @@ def run(args: argparse.Namespace) -> int:
     done = []
     started = time.monotonic()
     for number, (what, build) in enumerate(steps, start=1):
-        if not args.json:
-            print(f"warm-up {number}/{len(steps)}: {what} …", file=sys.stderr, flush=True)
         t0 = time.monotonic()
-        build()
+        with working(f"warm-up {number}/{len(steps)}: {what}"):  # ticks on a terminal
+            build()
         done.append({"what": what, "seconds": round(time.monotonic() - t0, 2)})
-        if not args.json:
-            print(f"warm-up {number}/{len(steps)}: {what} ready ({done[-1]['seconds']:.1f} s)",
-                  file=sys.stderr, flush=True)
     total = round(time.monotonic() - started, 2)
     if args.json:
         emit_json({"world": world.name, "steps": done, "seconds": total})
