@@ -66,7 +66,6 @@ class TerminalProgress:
     def __call__(self, what: str, done: int | None = None, total: int | None = None) -> None:
         from tqdm import tqdm
 
-        _shown.set()
         with self._lock:
             if what != self._what or self._bar is None or (total is not None and self._bar.total != total):
                 self._end()
@@ -75,6 +74,7 @@ class TerminalProgress:
                 self._bar = tqdm(total=total, desc=what, file=self.stream or sys.stderr, leave=True,
                                  dynamic_ncols=True, mininterval=0.2,
                                  bar_format=None if counted else "{desc} … {elapsed}")
+                _count_bar(+1)
                 if not counted:
                     self._start_ticker()
             if done is not None:
@@ -101,6 +101,7 @@ class TerminalProgress:
         if self._bar is not None:
             self._bar.close()
             self._bar = None
+            _count_bar(-1)
         self._what = None
 
     def close(self) -> None:
@@ -109,7 +110,14 @@ class TerminalProgress:
 
 
 _hook: Hook | None = None
-_shown = threading.Event()  # a progress display has been drawn (a heartbeat then stands aside)
+_bars_lock = threading.Lock()
+
+
+def _count_bar(change: int) -> None:
+    global _open_bars
+    with _bars_lock:
+        _open_bars += change
+_open_bars = 0  # progress lines on screen now (a heartbeat stands aside while there are any)
 
 
 def set_hook(hook: Hook | None) -> None:
@@ -187,7 +195,6 @@ class Heartbeat:
         self._thread: threading.Thread | None = None
 
     def start(self) -> "Heartbeat":
-        _shown.clear()
         try:
             terminal = self.stream.isatty()
         except (AttributeError, ValueError):
@@ -198,18 +205,28 @@ class Heartbeat:
         return self
 
     def _run(self) -> None:
-        if self._done.wait(self.delay_s) or _shown.is_set():
-            return
         from tqdm import tqdm
 
-        started = time.monotonic() - self.delay_s
-        bar = tqdm(total=None, desc=self.what, file=self.stream, leave=False, dynamic_ncols=True,
-                   bar_format="{desc} … {elapsed}", initial=0)
-        bar.start_t = bar._time() - (time.monotonic() - started)  # count from the command's start
-        while not self._done.wait(TICK_S) and not _shown.is_set():
-            with contextlib.suppress(Exception):
-                bar.refresh()
-        bar.close()
+        started = time.monotonic()
+        if self._done.wait(self.delay_s):
+            return
+        bar = None
+        while True:
+            if _open_bars > 0:  # another progress line says what is going on
+                if bar is not None:
+                    bar.close()
+                    bar = None
+            else:
+                if bar is None:
+                    bar = tqdm(total=None, desc=self.what, file=self.stream, leave=False, dynamic_ncols=True,
+                               bar_format="{desc} … {elapsed}")
+                    bar.start_t -= time.monotonic() - started  # count from the command's start
+                with contextlib.suppress(Exception):
+                    bar.refresh()
+            if self._done.wait(TICK_S):
+                break
+        if bar is not None:
+            bar.close()
 
     def stop(self) -> None:
         self._done.set()

@@ -53,3 +53,20 @@ def test_the_default_outside_a_terminal_says_nothing(capsys):
     with progress.working("something long"):
         pass
     assert capsys.readouterr().err == ""
+
+
+def test_a_heartbeat_speaks_after_its_delay_and_stands_aside_for_a_progress_line():
+    screen = FakeTerminal()
+    beat = progress.Heartbeat("assistant fetch", delay_s=0.2, stream=screen).start()
+    time.sleep(0.1)
+    assert screen.getvalue() == ""  # quick commands show nothing
+    time.sleep(1.0)
+    assert "assistant fetch" in screen.getvalue()
+    other = progress.TerminalProgress(FakeTerminal())
+    other("training the tagger")
+    time.sleep(0.8)
+    size = len(screen.getvalue())
+    time.sleep(1.0)
+    assert len(screen.getvalue()) == size  # silent while the other line ticks
+    other.close()
+    beat.stop()
