@@ -36,8 +36,6 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
-#: longest command text accepted, in characters (a spoken command has a few hundred)
-MAX_COMMAND_CHARS = 2000
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
 
@@ -65,7 +63,10 @@ def parse_request(line: str) -> dict:
 
 
 def check_command_text(text) -> str:
-    """The command text, refused when empty or longer than :data:`MAX_COMMAND_CHARS`."""
+    """The command text, refused when empty or longer than the parser takes
+    (:data:`assistant.grounding.parser.MAX_CHARS`)."""
+    from assistant.grounding.parser import MAX_CHARS as MAX_COMMAND_CHARS
+
     if not isinstance(text, str):
         raise AssistantError(f"the command must be text, got {type(text).__name__}")
     if not text.strip():

@@ -10,7 +10,8 @@ import pytest
 from PIL import Image
 
 from assistant.cli import main
-from assistant.cli.common import MAX_COMMAND_CHARS, join_negative_values
+from assistant.cli.common import join_negative_values
+from assistant.grounding.parser import MAX_CHARS as MAX_COMMAND_CHARS
 
 
 def run(argv, capsys):
@@ -90,3 +91,15 @@ def test_a_batch_answers_every_line(tmp_path, capsys):
     assert code == 0 and [a["line"] for a in answers] == [1, 2, 3, 4, 5, 6, 7]
     assert all("error" in a for a in answers)
     assert "out of range" in answers[0]["error"] and "UTF-8" in answers[1]["error"]
+
+
+def test_a_pasted_page_is_refused_before_any_work(capsys):
+    import time
+
+    from assistant.grounding import CommandParser
+
+    parser = CommandParser.load()
+    started = time.perf_counter()
+    with pytest.raises(Exception, match="characters, more than"):
+        parser.parse("mug " * 250_000)
+    assert time.perf_counter() - started < 0.5
