@@ -15,7 +15,7 @@ Both read furniture relations through the spatial relation variables of disserta
 * **beside / between** — the DIST-SRV's ``superposition`` and ``near`` (:func:`closeness`),
   for ``between`` also a second item of the reference's kind close to the target.
 
-A reference is read as the item it is (:func:`as_item`): where perception fused two items into
+A reference is read as the item it is (:func:`~assistant.world.entity.as_item`): where perception fused two items into
 one track, the cells beyond what the catalogue's largest model of that category can reach from
 the detected centre are left out, so "in front of the couch" is not read from the other couch of
 an L.
@@ -28,22 +28,19 @@ how far along the room's extent, :func:`room_side_fit`), a wall ("against the le
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 
 from assistant.geometry import Pose2D, wrap_angle
 from assistant.rdt import RDT
 from assistant.spatial.srv import DIST_CENTRES_M, DistSRV, dir_srv, dist_srv
-from assistant.world.catalogue import load_catalogue
-from assistant.world.entity import Entity
+from assistant.world.entity import Entity, as_item
 
 __all__ = [
-    "DIRECTION_ANGLES", "Resolution", "as_item", "closeness", "direction_weight", "nearness",
+    "DIRECTION_ANGLES", "Resolution", "closeness", "direction_weight", "nearness",
     "relation_fit", "resolve", "room_side_fit", "strongest_direction", "view_fit", "wall_fit",
 ]
 
@@ -176,33 +173,6 @@ def wall_fit(target: Entity, viewer: Pose2D, direction: str | None, floorplan) -
             agree = max(math.cos(wrap_angle(side - viewer.theta - angle)), 0.0) ** 2
         best = max(best, agree * near)
     return best
-
-
-# ----------------------------------------------------------------------------- the reference as an item
-
-@lru_cache(maxsize=None)
-def _largest_reach_m(category: str) -> float:
-    """Metres from the centre to a corner of the largest catalogue model of ``category`` (0 when
-    the catalogue has none)."""
-    return max((math.hypot(m.length_m, m.width_m) / 2 for m in load_catalogue().models.values()
-                if m.category == category), default=0.0)
-
-
-def as_item(entity: Entity) -> Entity:
-    """The reference as the item it is said to be: perception may fuse two items into one
-    track (an L of two couches seen as one couch), whose cells then reach past anything of its
-    category; the cells farther from the detector's centre (``attributes["x"]``, ``["y"]``)
-    than the largest catalogue model of its category reaches are not part of that item.
-    An entity without a detected centre or a known category is returned as it is."""
-    attrs = entity.attributes or {}
-    reach = _largest_reach_m(entity.category) if entity.category else 0.0
-    if reach <= 0 or "x" not in attrs or "y" not in attrs or not len(entity.cells):
-        return entity
-    offsets = entity.points_m() - np.array(entity.centre_m)
-    keep = np.hypot(offsets[:, 0], offsets[:, 1]) <= reach + entity.grid.resolution_m
-    if keep.all() or not keep.any():
-        return entity
-    return dataclasses.replace(entity, cells=entity.cells[keep])
 
 
 # ----------------------------------------------------------------------------- one pair

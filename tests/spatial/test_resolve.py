@@ -128,7 +128,7 @@ def test_a_reference_fused_with_its_neighbour_is_read_as_the_item_it_is(all_worl
 
     import numpy as np
 
-    from assistant.spatial.resolve import as_item
+    from assistant.world.entity import as_item
 
     world = all_worlds["two-bedrooms-house"]
     items = {e.id: e for e in _room(world, "living room")}
