@@ -36,6 +36,16 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
+def show_report(args, report, print_report) -> int:
+    """The end of every ``assistant eval NAME``: the report as one JSON line with ``--json``,
+    else ``print_report(report)``'s tables; exit status 0."""
+    if getattr(args, "json", False):
+        emit_json(report)
+    else:
+        print_report(report)
+    return 0
+
+
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
 
