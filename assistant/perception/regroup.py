@@ -3,13 +3,15 @@
 The floor grid's connected components are the detector's samples; two cases they get wrong on
 real frames are put right here, each as a hypothesis the classifier confirms:
 
-* **a bed cut by its footboard's shadow** (:func:`shadow_joins`): seen from its foot end, the
-  footboard hides the mattress behind it, and only a strip of mattress far beyond shows — two
-  samples, neither a bed. A sample B lying behind a sample A (along the camera's rays), thin
+* **a bed cut by its footboard's shadow** (:func:`shadow_candidates`): seen from its foot end,
+  the footboard hides the mattress behind it, and only a strip of mattress far beyond shows —
+  two samples, neither a bed. A sample B lying behind a sample A (along the camera's rays), thin
   along them, whose near edge is no farther than where a ray grazing A's top comes down to B's
   top surface, is joined with A's part that rises to B's height (the footboard; a bench in
-  front of it stays apart) — kept if the classifier reads the join as a bed.
-* **a night stand beside a bed** (:func:`side_splits`): a small box standing against a bed's
+  front of it stays apart) — kept if the classifier reads the join as a bed, or the verifier
+  (``info["checked"]``) the part before the board as ``other`` (a bench: the board and what
+  lies in its shadow are one item).
+* **a night stand beside a bed** (:func:`side_candidates`): a small box standing against a bed's
   long side is one component with it. Cells that stick out sideways beyond the bed's width
   (the median of its cross-section along its length) by more than a margin, in a piece of
   night-stand size, are split off — kept if the classifier reads that piece as a small table
@@ -200,7 +202,7 @@ def regroup(samples: list[FurnitureSample], labels: list[tuple[str, float]], sur
         if ia in used or ib in used:
             continue
         (sub, conf), *rest = classify([join] + ([near] if near is not None else []))
-        if category_of(sub) != "bed":
+        if category_of(sub) != "bed" and not (near is not None and near.info.get("checked") == "other"):
             continue
         used.update((ia, ib))
         join.info["joined"] = "shadow"
