@@ -225,11 +225,12 @@ class FurnitureDetector:
             s.info["shape"] = shape_descriptor(s.points, s.normals, camera_xy=camera_xyz[:2])
             rows.append(np.hstack([normal_histogram(s.points, s.normals, self.params.features),
                                    s.info["shape"]]))
-        return self._labels(np.array(rows), samples)
+        return self._labels(np.array(rows), samples, every=True)
 
-    def _labels(self, X: np.ndarray, samples: list) -> list[tuple[str, float]]:
+    def _labels(self, X: np.ndarray, samples: list, every: bool = False) -> list[tuple[str, float]]:
         """(subclass, confidence) per row of ``[M_h | shape descriptor]``: the main
-        classifier's, and for the beds and couches among them the verifier's say
+        classifier's, and for the beds and couches among them (``every``: for all, as the
+        regrouped parts need) the verifier's say
         (:func:`~assistant.perception.classifiers.verified_category`) — a sample it turns into
         another category gets the verifier's subclass and confidence; ``sample.info["verified"]``
         records the change."""
@@ -238,8 +239,11 @@ class FurnitureDetector:
         verifier = getattr(self.models, "verifier", None)
         if verifier is None or not self.verify:
             return labels
-        vsubs, vconf = verifier.predict_with_confidence(X)
-        for i, (vsub, vc) in enumerate(zip(vsubs, vconf)):
+        rows = [i for i, (sub, _) in enumerate(labels) if every or category_of(sub) in ("bed", "couch")]
+        if not rows:
+            return labels
+        vsubs, vconf = verifier.predict_with_confidence(X[rows])
+        for i, vsub, vc in zip(rows, vsubs, vconf):
             samples[i].info["checked"] = category_of(str(vsub))
             solid, open_ = X[i, -2], X[i, -1]
             final = verified_category(category_of(labels[i][0]), category_of(str(vsub)), solid, open_)
