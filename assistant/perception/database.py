@@ -28,8 +28,10 @@ import ast
 import hashlib
 import inspect
 import io
+import logging
 import math
 import textwrap
+import zipfile
 from dataclasses import dataclass, field, fields
 from functools import lru_cache
 from importlib import resources
@@ -460,8 +462,9 @@ def cached_database(name: str, items: list[Item], plan: ViewPlan,
     if path.exists():
         try:
             return Database.from_bytes(path.read_bytes())
-        except (OSError, ValueError, KeyError):
-            pass  # a damaged cache file is rebuilt
+        except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile) as error:
+            logging.getLogger(__name__).warning(  # a damaged cache file is rebuilt
+                "ignoring unreadable view database %s (%s); rendering it again", path, error)
     db = render_database(items, plan, params)
     atomic_write_bytes(path, db.to_bytes())
     return db

@@ -125,7 +125,7 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
     """The models trained on the training database, cached by a hash of their inputs."""
     key = models_key(method, features, plans, items, variants)
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
-    if (models := read_cache(path)) is not None:
+    if (models := read_cache(path, PerceptionModels)) is not None:
         return models
     models = fit_models(training_database(plans, items, variants=False), method, features,
                         verifier_db=training_database(plans, items) if variants else None)

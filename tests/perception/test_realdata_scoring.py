@@ -68,15 +68,15 @@ def test_eval_perception_rejects_a_range_it_cannot_use(capsys):
 
 
 def test_the_range_knob_sets_the_points_kept_and_the_grid():
-    from assistant.eval.perception import _frame_params
+    from assistant.eval.perception import frame_params
     from assistant.perception.samples import grid_size
 
-    p = _frame_params(5.5).samples
+    p = frame_params(5.5).samples
     assert (p.max_forward_m, p.x_range_m[1]) == (5.5, 5.5)
     assert grid_size(p)[0] == 110
-    assert _frame_params(None).samples.max_forward_m == 4.0
+    assert frame_params(None).samples.max_forward_m == 4.0
     with pytest.raises(Exception, match="1 to 8"):
-        _frame_params(9.0)
+        frame_params(9.0)
 
 
 def test_most_of_sun_000001s_bed_lies_beyond_the_four_metres_the_detector_keeps(shared_dir):
