@@ -146,8 +146,8 @@ class FurnitureDetector:
     a sample taller than ``tall_m`` with under ``min_surface_share`` of its points on upward
     surfaces 0.3–0.75 m high (seat, mattress, table top) is not furniture of any category —
     measured on real frames, these are shelves, wardrobes and water heaters the classifier
-    would otherwise call beds (a small table is exempt: a night stand with a tall lamp on it
-    has little top to see, and the training views have such night stands).
+    would otherwise call beds (a night stand found beside a bed, :func:`night_stands`, is
+    exempt: with a tall lamp on it it has little top to see).
     ``weigh_coverage`` sets each detection's ``coverage`` (how much of the item the view
     showed; 1 when False), which weighs it in fusion.
     """
@@ -271,7 +271,7 @@ class FurnitureDetector:
             elif (category in ("bed", "couch") and sample.info.get("checked", category) != category
                   and range_cut(sample, self.params.samples.max_forward_m)):
                 why = "disputed"  # cut by the range and the verifier reads it otherwise
-            elif category != "small table" and not _has_furniture_surface(
+            elif "night_stand" not in sample.info and not _has_furniture_surface(
                     sample.info["shape"], self.tall_m, self.min_surface_share):
                 why = "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
             if why is not None:
