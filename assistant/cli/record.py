@@ -99,6 +99,8 @@ def look_around(robot, step_deg: float = 30.0, turn_rate_rad_s: float = 0.4) -> 
 def _fetch(robot, args, world: str, scene: str) -> dict:
     from assistant.executor.trial import FetchRunner
 
+    robot.connect()
+    robot.record_turn("user", args.fetch)
     outcome = FetchRunner().run(args.fetch, world, scene, args.perception, args.seed, robot=robot)
     robot.close()
     return outcome.data
