@@ -49,6 +49,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="evaluate only this grounder (repeatable; default all three)")
     parser.add_argument("--no-plans", dest="plans", action="store_false",
                         help="skip (c): parsing every corpus description from its text")
+    parser.add_argument("--descriptions", metavar="PATH", action="append",
+                        help="(d) annotated descriptions (corpus XML, e.g. the real CSISL file): parse each "
+                             "text and report the share whose plan names the object they name and "
+                             "leaves no spatial word unused (repeatable)")
+    parser.add_argument("--descriptions-world", metavar="NAME", default=CSISL_WORLD,
+                        help="the home the descriptions were given in (default apartment)")
     parser.add_argument("--errors", type=int, default=0, metavar="N",
                         help="also list up to N wrongly grounded test chunks per grounder")
 
@@ -152,6 +158,8 @@ def run(args: argparse.Namespace) -> int:
                 language = CommandParser.load(name, args.corpus).language
             result["plans"][name] = plan_agreement(CommandParser(language, grounder), descriptions,
                                                    corpus.commands, limit=args.errors)
+    if args.descriptions:
+        result["descriptions"] = _coverage(args, names)
     errors: dict[str, list] = {}
     if test is not None:
         result["test"] = {"file": str(test_path), "world": test_world, "commands": len(test.commands),
@@ -194,6 +202,13 @@ def run(args: argparse.Namespace) -> int:
                 out.write(f"  #{e['command']} {e['label']} '{e['words']}': gold {gold} guess {guess}\n")
     else:
         out.write("(b) skipped: no test file (give --test PATH)\n")
+    for name, cov in (result.get("descriptions") or {}).items():
+        out.write(f"\n(d) {cov['files']}: parsed in {args.descriptions_world} with {name}: plan names the "
+                  f"object said and leaves no spatial word unused: {cov['covered']} / {cov['descriptions']} "
+                  f"= {_pct(cov['share'])} %\n    misses by why: {cov['why']}\n"
+                  f"    spatial words left unused most: {cov['unused_words']}\n")
+        for m in cov["misses"]:
+            out.write(f"  #{m['number']} '{m['text']}': object (said, plan) {m['object']} unused {m['unused']}\n")
     if result.get("plans"):
         out.write("\n(c) every corpus description parsed from its text (tagger + chunker + grounder, "
                   "trained on the whole corpus): plan (room, nodes, object) equal to its annotation's (%)\n")
@@ -207,6 +222,24 @@ def run(args: argparse.Namespace) -> int:
             for d in result["plans"][name]["disagreements"]:
                 out.write(f"  {name} #{d['number']} '{d['text']}': annotation {d['gold']} parsed {d['parsed']}\n")
     return 0
+
+
+def _coverage(args, names) -> dict:
+    """(d): each grounder's parser over the descriptions files (:mod:`assistant.grounding.coverage`)."""
+    from assistant.grounding.coverage import plan_coverage
+    from assistant.grounding.parser import CommandParser
+    from assistant.language.corpus import read_corpora
+    from assistant.world import load_world
+
+    read = read_corpora(args.descriptions)
+    world = load_world(args.descriptions_world)
+    out = {}
+    for name in names:
+        parser = CommandParser.load(name, args.corpus, world)
+        cov = plan_coverage(parser, read.descriptions, limit=args.errors)
+        cov["files"] = ", ".join(str(f) for f in read.files)
+        out[name] = cov
+    return out
 
 
 def _pct(value) -> str:

@@ -25,7 +25,8 @@ from functools import lru_cache
 
 from assistant.grounding.vocabulary import FURNITURE_WORDS, SYNONYMS
 
-__all__ = ["ObjectPhrase", "object_kind", "object_phrase", "singular", "is_object_word"]
+__all__ = ["ObjectPhrase", "object_kind", "object_phrase", "object_phrases", "said_object", "singular",
+           "is_object_word"]
 
 #: nouns that say a place, a part, a count, a motion or nothing in particular — never an object
 NOT_OBJECTS = frozenset({
@@ -40,7 +41,9 @@ NOT_OBJECTS = frozenset({
     "left-hand", "right-hand", "intersection", "house", "home", "kitchen", "bedroom", "bathroom",
     "office", "living", "dining", "closet", "lot", "few", "level", "row", "line", "surface",
     "find", "see", "get", "grab", "bring", "fetch", "pick", "spot", "notice", "locate", "search",
-    "check", "need", "want", "put", "leave", "left", "sit", "rest", "lie", "lay",
+    "check", "need", "want", "put", "leave", "left", "sit", "rest", "lie", "lay", "laying",
+    "let", "lets", "do", "does", "say", "says", "got", "better", "nothing", "smack", "youll", "walk",
+    "walks", "goes", "think", "guess", "believe", "know", "kind", "sort", "color", "colour", "shape",
     "le", "yo", "tot", "er", "um", "uh", "uhm", "erm", "hmm", "you", "me", "it", "there",
 })
 #: words for a group of things: "a ring of keys" is the keys
@@ -49,6 +52,12 @@ COLLECTIVES = frozenset({"ring", "set", "bunch", "pair", "pile", "stack", "bundl
 #: tags of nouns (Penn) and of words the tagger could only guess at
 NOUN_TAGS = frozenset({"NN", "NNS", "NNP", "NNPS"})
 ADJECTIVE_TAGS = frozenset({"JJ", "JJR", "JJS", "VBN"})
+#: words that make the object after them a landmark of a place
+LANDMARK_BEFORE = frozenset({"with", "by", "next", "near", "beside", "behind", "has", "have", "had",
+                             "between", "besides", "from", "past", "around"})
+#: "-ing" words that are things ("a ring"); any other is a verb or a gerund ("sitting")
+ING_NOUNS = frozenset({"ring", "thing", "ceiling", "painting", "string", "building", "clothing",
+                       "earring", "earrings", "charger", "wedding", "drawing", "stocking", "pudding"})
 #: words between a collective and what it holds
 OF = "of"
 FILLER_WORDS = frozenset({"um", "uh", "er", "erm", "uhm", "hmm", "like"})
@@ -138,12 +147,16 @@ def is_object_word(word: str) -> bool:
 def _nounish(word: str, tag: str) -> bool:
     if word in NOT_OBJECTS or word in FURNITURE_WORDS or SYNONYMS.get(word) in FURNITURE_WORDS:
         return False
+    if is_object_word(word):  # whatever the tagger made of it ("glassescase")
+        return True
     if tag in ("RM", "STR", "DIR", "WHO", "ON", "IGN", "POS", "CD", "PRP", "PRP$"):
         return False
     if not any(ch.isalpha() for ch in word):
         return False
+    if word.endswith("ing") and len(word) > 4 and word not in ING_NOUNS and not is_object_word(word):
+        return False
     # a tagger's FUR that is no furniture the robot knows ("lamp", "box") is a thing like any other
-    return tag in NOUN_TAGS or tag == "FUR" or is_object_word(word)
+    return tag in NOUN_TAGS or tag == "FUR"
 
 
 def _restarts(words: Sequence[str]) -> set[int]:
@@ -161,10 +174,18 @@ def _restarts(words: Sequence[str]) -> set[int]:
 
 def object_phrase(words: Sequence[str], pos: Sequence[str]) -> ObjectPhrase | None:
     """The first object a chunk's words name (see the module doc), or None."""
+    found = object_phrases(words, pos)
+    return found[0][0] if found else None
+
+
+def object_phrases(words: Sequence[str], pos: Sequence[str]) -> list[tuple[ObjectPhrase, bool]]:
+    """Every object a chunk's words name, in order, each with whether it is said as a landmark
+    (after "with", "by", "next to", "has" …: "the table with the computer")."""
     lowered = [w.strip().lower() for w in words]
     tags = [str(p).upper() for p in pos] + ["NN"] * (len(lowered) - len(pos))
     cut = _restarts(lowered)
     keep = [(w, t) for i, (w, t) in enumerate(zip(lowered, tags)) if i not in cut and w and w not in FILLER_WORDS]
+    out: list[tuple[ObjectPhrase, bool]] = []
     i = 0
     while i < len(keep):
         w, t = keep[i]
@@ -188,11 +209,34 @@ def object_phrase(words: Sequence[str], pos: Sequence[str]) -> ObjectPhrase | No
         if nouns == [w] and not _nounish(w, t):  # a collective with nothing after "of"
             i += 1
             continue
+        if _describes_furniture(keep, j):  # "a light wood table", "the sand colored table"
+            i = j
+            continue
         adjectives = []
         a = i - 1
         while a >= 0 and keep[a][1] in ADJECTIVE_TAGS and keep[a][0] not in NOT_OBJECTS:
             adjectives.insert(0, keep[a][0])
             a -= 1
-        phrase = " ".join(nouns)
-        return ObjectPhrase(tuple(nouns), tuple(adjectives), object_kind(phrase))
+        landmark = any(w in LANDMARK_BEFORE for w, _ in keep[max(0, a - 2):a + 1])
+        out.append((ObjectPhrase(tuple(nouns), tuple(adjectives), object_kind(" ".join(nouns))), landmark))
+        i = j
+    return out
+
+
+def _describes_furniture(keep, j: int) -> bool:
+    """Whether the nouns ending before position ``j`` are followed (past adjectives) by a
+    furniture word, so that they say what the furniture is made of or looks like."""
+    while j < len(keep) and keep[j][1] in ADJECTIVE_TAGS:
+        j += 1
+    return j < len(keep) and (keep[j][0] in FURNITURE_WORDS or SYNONYMS.get(keep[j][0]) in FURNITURE_WORDS)
+
+
+def said_object(chunks) -> str | None:
+    """The object a command names outside its object phrases: the first the catalogue knows
+    among the chunks' own words, not said as a landmark ("on the desk you will see the keys";
+    "the table with the computer" is no laptop to fetch). ``chunks``: (words, tags) pairs."""
+    for words, tags in chunks:
+        for found, landmark in object_phrases(words, tags):
+            if not landmark and is_object_word(found.kind):
+                return found.kind
     return None

@@ -96,6 +96,6 @@ class CommandParser:
         corrections = dict(getattr(analysis, "corrections", {}) or {})
         records, groundings, plan = self.ground_tree(analysis.tree, corrections)
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
-                                   analysis.unknown, corrections)
+                                   analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)
         return ParseResult(analysis, records, groundings, plan)

@@ -14,6 +14,8 @@ decide it (each rule is one family of real phrasing, not one sentence):
 * **rooms** — a room phrase that names no room and no side ("walk straight into", "as soon as
   you get into") after a room was already named repeats nothing;
 * **furniture** — a target phrase that names no furniture ("on it") has no target;
+* **whose side** — a side said of the room ("the right end of the room") is the room's, a side
+  said of the listener ("on your right", "ahead to your left") the robot's;
 * **motion** — "stop" is a ``stop`` node; "halfway" is the centre of the room; "the other /
   far side (end) of the room" is its back; a turn or a side step said with a side ("turn
   right again", "side step left") moves to that side; "until you hit the wall", "go to the
@@ -141,6 +143,11 @@ def _motion_rules(label: str, words: list[str], g: ChunkGrounding) -> ChunkGroun
             return replace(g, direction=side)
     if label == "FURRP" and g.reference in FURNITURE_WORDS.values() and said & PASSING_WORDS:
         return replace(g, direction="back")
+    # whose side: "the right end of the room" is the room's, "on your right" the listener's
+    if g.reference == "robot" and said & {"room"} and not said & LISTENER:
+        return replace(g, reference="room")
+    if g.reference == "room" and said & LISTENER and not said & ROOM_WORDS and g.direction in SIDES:
+        return replace(g, reference="robot")
     return g
 
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 #: reference words that are not furniture (dissertation 4.3 II.B, Fig. 1)
-STRUCTURE_REFERENCES = ("move", "room", "wall", "door", "robot")
+STRUCTURE_REFERENCES = ("move", "room", "wall", "door", "robot", "stop")
 #: the directions of the RDT model
 DIRECTIONS = ("front", "back", "left", "right", "center", "beside", "between")
 #: the target word of a node that has no target furniture
@@ -27,7 +27,7 @@ NO_TARGET = "non"
 #: furniture category words the robot recognises (the catalogue's ``word`` values)
 FURNITURE_CATEGORIES = ("table", "chair", "couch", "bed")
 #: references whose node needs no furniture perception (a dynamic description)
-DYNAMIC_REFERENCES = frozenset({"move", "room", "wall", "door"})
+DYNAMIC_REFERENCES = frozenset({"move", "room", "wall", "door", "stop"})
 
 #: single words → canonical word (lower case)
 SYNONYMS: dict[str, str] = {
@@ -37,7 +37,9 @@ SYNONYMS: dict[str, str] = {
     "tables": "table", "chairs": "chair", "beds": "bed", "desks": "desk", "armchair": "chair",
     "stool": "chair", "seat": "chair", "seats": "chair",
     # rooms and structure
-    "lounge": "living", "walls": "wall", "doorway": "door", "entrance": "door",
+    "lounge": "living", "walls": "wall", "doorway": "door", "entrance": "door", "doors": "door",
+    "doorways": "door", "rooms": "room", "livingroom": "living", "bedrooms": "bedroom",
+    "pass": "past", "passing": "past", "passed": "past", "towards": "toward",
     # directions
     "centre": "center", "middle": "center", "rear": "back", "alongside": "beside",
     # movement verbs

@@ -107,3 +107,26 @@ def test_motion_families():
 def test_target_phrase_on_it_has_no_target():
     assert ground("FURTP", "ON on PRP it", ChunkGrounding(target="table")) == ChunkGrounding()
     assert ground("FURTP", "ON on DT the FUR counter", ChunkGrounding(target="table")).target == "table"
+
+
+def test_amounts_of_steps_and_turns():
+    from assistant.grounding.amounts import STEP_M, said_amount
+
+    assert said_amount("take 2 steps forward".split()).distance_m == pytest.approx(2 * STEP_M)
+    assert said_amount("about 4 er 5 steps forward".split()).distance_m == pytest.approx(4.5 * STEP_M)
+    assert said_amount("side step left a couple of steps".split()).distance_m == pytest.approx(2 * STEP_M)
+    assert said_amount("take a step forward".split()).distance_m == pytest.approx(STEP_M)
+    assert said_amount("turn left 90 degrees".split()).degrees == 90
+    assert said_amount("walk in about a 45 degree angle".split()).degrees == 45
+    assert said_amount("make another ninety degree turn".split()).degrees == 90
+    assert not said_amount("step forward to the desk".split())
+
+
+def test_loose_moves_outside_chunks():
+    from assistant.grounding.loose import loose_moves
+
+    assert [m for m, _ in loose_moves("um go forward and".split())] == [("move", "front")]
+    assert [m for m, _ in loose_moves("ok left left".split())] == [("move", "left"), ("move", "left")]
+    assert [m for m, _ in loose_moves("go straight go ahead and".split())] == [("move", "front")]
+    assert [m for m, _ in loose_moves("stop".split())] == [("stop", "center")]
+    assert loose_moves("and it is right there on the left".split()) == []
