@@ -40,3 +40,9 @@ class DataFileError(AssistantError, ValueError):
         self.problem = problem
         location = f"{path}: {where}" if where else path
         super().__init__(f"{location}: {problem}")
+
+
+class NotFittedError(AssistantError, ValueError, AttributeError):
+    """A learned model (tagger, chunker, grounder, policy, generation model) used before it was
+    trained. Also a :class:`ValueError` and :class:`AttributeError`, as scikit-learn's own
+    ``NotFittedError`` is, so code written against scikit-learn's convention still catches it."""

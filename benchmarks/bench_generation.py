@@ -38,7 +38,7 @@ def main() -> int:
     args = ap.parse_args()
 
     from assistant.generation import Describer, load_generation_model, oracle_cases
-    from assistant.generation.evaluation import SCENES, STUDY_WORLDS
+    from assistant.eval.generation import SCENES, STUDY_WORLDS
 
     t0 = time.perf_counter()
     model = load_generation_model()

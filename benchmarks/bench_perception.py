@@ -45,7 +45,7 @@ STAGES = ("cloud", "floor", "samples", "features", "classify")
 
 def simulated_frames(views: int) -> list:
     """(label, frame) of the first ``views`` viewpoints of each Table 3-9 scene."""
-    from assistant.perception.scenes import SCENES, viewpoints
+    from assistant.eval.perception_scenes import SCENES, viewpoints
     from assistant.sim.renderer import DepthRenderer
     from assistant.world import load_world
 

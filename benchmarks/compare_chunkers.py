@@ -33,7 +33,7 @@ def main() -> int:
 
     from assistant.language.chunker import NestedChunker
     from assistant.language.corpus import default_corpus_paths, read_corpora, read_corpus
-    from assistant.language.evaluation import default_test_paths
+    from assistant.eval.tagging import default_test_paths
 
     train = read_corpora(args.corpus or default_corpus_paths()).trees()
     tests = {Path(p).name: read_corpus(p).trees() for p in (args.test or default_test_paths())}

@@ -39,7 +39,7 @@ def main(argv=None) -> int:
     from assistant.cli.common import print_table
     from assistant.language.consistency import consistency_report
     from assistant.language.corpus import read_corpus
-    from assistant.language.evaluation import _cross_validate
+    from assistant.eval.tagging import _cross_validate
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--csisl", type=Path, default=ROOT.parent / "shared" / "realdata" / "csisl",

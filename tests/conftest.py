@@ -7,6 +7,10 @@ from pathlib import Path
 
 import pytest
 
+from assistant.runtime import limit_openmp_threads
+
+limit_openmp_threads()  # as the command line does at start-up
+
 SHARED = Path(__file__).resolve().parents[1].parent / "shared"
 
 

@@ -13,6 +13,7 @@ import importlib
 import sys
 
 from assistant.errors import AssistantError
+from assistant.runtime import limit_openmp_threads
 
 #: Command modules under ``assistant.cli``, in the order ``--help`` lists them.
 COMMAND_MODULES = (
@@ -48,6 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    limit_openmp_threads()
     parser = build_parser()
     args = parser.parse_args(argv)
     try:

@@ -1,8 +1,7 @@
 """``assistant eval NAME``: the dissertation's experiments, reproduced on this product.
 
-Each evaluation lives beside the code it measures, in ``assistant/<package>/evaluation.py``,
-and exposes ``add_arguments(parser)`` and ``run(args) -> int``. This module only knows their
-names; the chosen evaluation's module is imported when it runs, so neither ``assistant
+Each evaluation lives in ``assistant/eval/NAME.py`` and exposes ``add_arguments(parser)`` and
+``run(args) -> int``. This module only knows their names; the chosen evaluation's module is imported when it runs, so neither ``assistant
 --help`` nor one evaluation pays for importing the others.
 """
 
@@ -15,13 +14,13 @@ from assistant.errors import AssistantError
 
 #: evaluation name → module that implements it
 EVALUATIONS = {
-    "tagging": "assistant.language.evaluation",
-    "grounding": "assistant.grounding.evaluation",
-    "perception": "assistant.perception.evaluation",
-    "policy": "assistant.policy.evaluation",
-    "fetch": "assistant.executor.evaluation",
-    "generation": "assistant.generation.evaluation",
-    "dialogue": "assistant.dialogue.evaluation",
+    "tagging": "assistant.eval.tagging",
+    "grounding": "assistant.eval.grounding",
+    "perception": "assistant.eval.perception",
+    "policy": "assistant.eval.policy",
+    "fetch": "assistant.eval.fetch",
+    "generation": "assistant.eval.generation",
+    "dialogue": "assistant.eval.dialogue",
 }
 
 

@@ -2,7 +2,7 @@
 
 Perception reports a furniture *category* (small table, large table, chair, couch, bed) and
 the floor cells it covers, not the model. The furniture catalogue (product knowledge, not the
-home's layout) says which models a word can mean — "round" the round table, "coffee" the coffee
+home's layout, ``catalogue.yaml``) says which models a word can mean — "round" the round table, "coffee" the coffee
 table, "square" the coffee and the dinner table (by their ``shape``), "desk" the desk — and so
 which category and roughly what footprint area to expect. :func:`description_fit` scores a
 perceived entity against the words: 1 when it agrees with some model the words can mean, less
@@ -16,15 +16,10 @@ import math
 from collections.abc import Sequence
 from functools import lru_cache
 
-from assistant.world import Entity
+from assistant.world import Entity, load_catalogue
 
-__all__ = ["SIZE_CATEGORIES", "SUPPORT_CATEGORIES", "description_fit", "models_for_word"]
+__all__ = ["description_fit", "models_for_word"]
 
-#: the word a person used for the support → the furniture category it suggests
-SUPPORT_CATEGORIES = {"desk": "large table", "dresser": "large table", "counter": "large table",
-                      "sideboard": "large table", "nightstand": "small table", "stand": "small table"}
-#: size descriptors → the category they suggest
-SIZE_CATEGORIES = {"small": "small table", "large": "large table"}
 #: factor for a category that disagrees with the words
 WRONG_CATEGORY = 0.4
 #: factor for the area: exp(-AREA_SLOPE · |ln(perceived / expected)|), at least AREA_FLOOR
@@ -53,10 +48,13 @@ def _word_fit(word: str, entity: Entity) -> float:
     """How well ``entity`` agrees with one descriptor or support word (1 when it says nothing
     the robot can check)."""
     category = entity.category
-    if word in SIZE_CATEGORIES:
-        return 1.0 if category == SIZE_CATEGORIES[word] else WRONG_CATEGORY
-    if word in SUPPORT_CATEGORIES and not models_for_word(word):
-        return 1.0 if category == SUPPORT_CATEGORIES[word] else WRONG_CATEGORY
+    catalogue = load_catalogue()
+    sizes = catalogue.words.sizes
+    if word in sizes:
+        return 1.0 if category == sizes[word] else WRONG_CATEGORY
+    suggested = catalogue.categories_of(word)  # "desk" → large table; "shelf" → either table
+    if len(suggested) == 1 and not models_for_word(word):
+        return 1.0 if category == suggested[0] else WRONG_CATEGORY
     models = models_for_word(word)
     if not models:
         return 1.0

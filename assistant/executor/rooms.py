@@ -35,27 +35,17 @@ class DoorCrossing:
 
 
 class RoomGraph:
-    """Rooms joined by doors (a networkx graph; edge attribute ``door`` is the :class:`Door`,
-    ``weight`` the straight-line distance between the rooms' centres through the door)."""
+    """Routes between rooms over the floor plan's :meth:`~assistant.world.Floorplan.room_graph`
+    (a networkx graph; edge attribute ``door`` is the :class:`Door`, ``weight`` the distance
+    between the rooms' centres through it).
 
-    def __init__(self, world: World):
-        import networkx as nx
+    The executor drives through doors only (``openings=False``): an open-plan room is entered
+    by the fetch task's open-plan entry instead, which finds its own way in across the open side.
+    """
 
+    def __init__(self, world: World, openings: bool = False):
         self.world = world
-        self.graph = nx.Graph()
-        rooms = world.floorplan.rooms
-        for room in rooms:
-            self.graph.add_node(room.name, centre=tuple(room.centre))
-        for door in world.floorplan.doors:
-            a, b = door.connects
-            if OUTSIDE in (a, b):
-                continue  # the robot never leaves the home
-            ca, cb = (np.asarray(self.graph.nodes[n]["centre"]) for n in (a, b))
-            c = np.asarray(door.centre)
-            weight = float(np.linalg.norm(ca - c) + np.linalg.norm(cb - c))
-            if self.graph.has_edge(a, b) and self.graph[a][b]["weight"] <= weight:
-                continue
-            self.graph.add_edge(a, b, door=door, weight=weight)
+        self.graph = world.floorplan.room_graph(openings=openings)
 
     @property
     def rooms(self) -> list[str]:

@@ -114,13 +114,8 @@ def entity_room(world: World, entity: Entity) -> str | None:
 
 
 def entity_centre(entity: Entity) -> tuple[float, float]:
-    """Best centre estimate (metres): the detector's fused centre when it has one, else the
-    centroid of the entity's cells."""
-    attrs = entity.attributes or {}
-    if "x" in attrs and "y" in attrs:
-        return float(attrs["x"]), float(attrs["y"])
-    c = entity.centroid_m
-    return float(c[0]), float(c[1])
+    """Best centre estimate (metres): :attr:`~assistant.world.Entity.centre_m`."""
+    return entity.centre_m
 
 
 def entity_polygon(entity: Entity) -> np.ndarray:

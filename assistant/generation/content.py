@@ -32,6 +32,8 @@ from typing import Callable
 import numpy as np
 
 from assistant.generation.types import ContentNode
+from assistant.spatial.resolve import closeness, strongest_direction
+from assistant.world import load_catalogue
 
 __all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
            "select_content", "support_of", "wall_band"]
@@ -59,7 +61,7 @@ OUTER = ("front", "left", "back", "right")
 LISTENER_SHARE = 0.75
 #: support words that tell a table's size, understood by the grounder (``end table`` →
 #: nightstand → a small table); offered only when a table of the other size is in the room
-SIZE_WORDS = {"small table": "end table"}
+SIZE_WORDS = load_catalogue().words.support_names
 SIZE_PROBABILITY = 0.6
 #: weight of the uniqueness term: the share of look-alikes the selection rules out
 UNIQUENESS = 0.5
@@ -74,11 +76,6 @@ class Candidate:
     holds_for: Callable[[object], bool]
     group: str
     forced: bool = False
-
-
-def _near(dist) -> float:
-    d = dist.as_dict()
-    return d["superposition"] + d["near"]
 
 
 def _near_or_middle(dist) -> float:
@@ -232,17 +229,18 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
         what is clearly false) it is enough that ``far`` is not the strongest distance word."""
         if x is ref or ref.orientation_rad is None:
             return None
-        d = dir_srv(ref, x)
-        weights = [d[w] for w in OUTER]
-        k = int(np.argmax(weights))
+        key = ("strongest", ref.id, x.id)
+        if key not in memo:
+            memo[key] = strongest_direction(ref, x)
+        word, weight = memo[key]
         dist = dist_srv(ref, x)
         prox = _near_or_middle(dist)
         close = prox >= MIN_NEAR if strict else dist.strongest()[0] != "far"
-        ok = weights[k] >= MIN_DIRECTION and close
-        return (OUTER[k], weights[k] * prox) if ok else None
+        ok = weight >= MIN_DIRECTION and close
+        return (word, weight * prox) if ok else None
 
     def beside(ref, x):
-        return 0.0 if x is ref else _near(dist_srv(ref, x))
+        return 0.0 if x is ref else closeness(dist_srv(ref, x))
 
     for ref_word, refs in sorted(by_word.items()):
         best: dict[str, tuple[float, str]] = {}  # direction → (P, reference id)
@@ -306,12 +304,12 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
                 gap = float(np.abs(x.points_m()[:, axis] - coord).min())
                 if not strict:
                     return gap <= LOOSE_WALL_GAP_M
-                return gap <= MAX_WALL_GAP_M and _near(dist_srv(band, x)) >= MIN_NEAR
+                return gap <= MAX_WALL_GAP_M and closeness(dist_srv(band, x)) >= MIN_NEAR
 
             if against(support):
                 out.append(Candidate(
                     ContentNode("relation", f"wall-{side}", f"wall-{side}-{word}",
-                                _near(dist_srv(band, support)), {"direction": side}, band.id),
+                                closeness(dist_srv(band, support)), {"direction": side}, band.id),
                     lambda x, f=against: f(x, strict=False), "wall"))
 
     poly = room.polygon_array
@@ -332,12 +330,12 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
         half = door.width_m / 2
         ent = Entity.from_polygon(f"door:{door.name}", "door", EntityKind.LONG_TERM,
                                   box_polygon(cx - half, cy - half, cx + half, cy + half), grid)
-        p = _near(dist_srv(ent, support))
+        p = closeness(dist_srv(ent, support))
         if p >= MIN_NEAR:
             out.append(Candidate(ContentNode("relation", "door-beside", f"door-beside-{word}", p,
                                              {"direction": "beside"}, ent.id),
                                  lambda x, ent=ent: (x.room == room_name
-                                                     and _near(dist_srv(ent, x)) >= MIN_NEAR),
+                                                     and closeness(dist_srv(ent, x)) >= MIN_NEAR),
                                  "door"))
     return out
 

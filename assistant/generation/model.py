@@ -20,7 +20,7 @@ import hashlib
 from collections import Counter, defaultdict
 from pathlib import Path
 
-from assistant.errors import AssistantError
+from assistant.errors import AssistantError, NotFittedError
 
 __all__ = ["RELATIONS", "INVERSE", "GenerationModel", "GenerationModelNotFittedError",
            "chunk_key", "infer_kind", "load_generation_model", "template_from_chunk"]
@@ -39,8 +39,8 @@ MODEL_VERSION = 5
 SLOT_OBJECT, SLOT_SUPPORT, SLOT_REF, SLOT_ROOM = "{object}", "{support}", "{ref}", "{room}"
 
 
-class GenerationModelNotFittedError(AssistantError, RuntimeError):
-    """The generation model was used before ``fit``."""
+#: the one :class:`~assistant.errors.NotFittedError` (this name kept for callers)
+GenerationModelNotFittedError = NotFittedError
 
 
 def chunk_key(label: str, grounding, pos: tuple[str, ...] = ()) -> str | None:

@@ -16,21 +16,10 @@ import numpy as np
 
 from assistant.generation.types import ContentNode
 
-__all__ = ["STRAIGHT_RAD", "room_graph", "room_path", "route_nodes"]
+__all__ = ["STRAIGHT_RAD", "room_path", "route_nodes"]
 
 #: a support within this angle of the walking direction is "straight ahead" (radians)
 STRAIGHT_RAD = math.radians(30)
-
-
-def room_graph(floorplan) -> nx.Graph:
-    """Rooms connected by doors and by open-plan openings (a person walks through both)."""
-    g = nx.Graph()
-    g.add_nodes_from(floorplan.room_names)
-    for door in tuple(floorplan.doors) + tuple(floorplan.openings):
-        a, b = door.connects
-        if a in g and b in g:
-            g.add_edge(a, b, door=door.name)
-    return g
 
 
 def room_path(floorplan, pose, room: str) -> list[str] | None:
@@ -39,7 +28,7 @@ def room_path(floorplan, pose, room: str) -> list[str] | None:
     if here is None:
         return None
     try:
-        return nx.shortest_path(room_graph(floorplan), here.name, room)
+        return nx.shortest_path(floorplan.room_graph(), here.name, room)  # fewest rooms, as a person counts
     except nx.NetworkXNoPath:
         return None
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
-from assistant.errors import AssistantError
+from assistant.errors import AssistantError, NotFittedError
 from assistant.grounding.spoken import spoken_groundings
 from assistant.grounding.types import FIELDS, ChunkGrounding, ChunkRecord, LabelledCommand
 from assistant.grounding.vocabulary import canonical_tokens, match_token
@@ -23,8 +23,8 @@ from assistant.grounding.vocabulary import canonical_tokens, match_token
 COMMAND = "whole command"
 
 
-class GrounderNotFittedError(AssistantError, ValueError):
-    """``ground`` was called on a grounder that has not been fitted."""
+#: the one :class:`~assistant.errors.NotFittedError` (this name kept for callers)
+GrounderNotFittedError = NotFittedError
 
 
 @dataclass(frozen=True)

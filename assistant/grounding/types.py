@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from assistant.grounding.vocabulary import DYNAMIC_REFERENCES, NO_TARGET
+from assistant.rdt import NO_TARGET, RDT
 
 #: the five grounding fields, in the column order of the chunk-grounding CSV
 FIELDS = ("target room", "target object", "reference", "direction", "target")
@@ -96,30 +96,6 @@ class LabelledCommand:
     records: tuple[ChunkRecord, ...]
     groundings: tuple[ChunkGrounding, ...]
     source: str = ""
-
-
-@dataclass(frozen=True)
-class RDT:
-    """One reference-direction-target triple, e.g. ``couch-front-table`` or ``move-left-non``."""
-
-    reference: str
-    direction: str
-    target: str = NO_TARGET
-
-    def __str__(self) -> str:
-        return f"{self.reference}-{self.direction}-{self.target}"
-
-    @classmethod
-    def parse(cls, text: str) -> "RDT":
-        parts = text.strip().split("-")
-        if len(parts) != 3 or not all(parts):
-            raise ValueError(f"an RDT reads reference-direction-target, got {text!r}")
-        return cls(*parts)
-
-    @property
-    def dynamic(self) -> bool:
-        """True when following it needs no furniture perception (move/room/wall/door, no target)."""
-        return self.reference in DYNAMIC_REFERENCES and self.target == NO_TARGET
 
 
 @dataclass(frozen=True)

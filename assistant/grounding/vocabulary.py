@@ -18,80 +18,28 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-#: reference words that are not furniture (dissertation 4.3 II.B, Fig. 1)
-STRUCTURE_REFERENCES = ("move", "room", "wall", "door", "robot", "stop")
-#: the directions of the RDT model
-DIRECTIONS = ("front", "back", "left", "right", "center", "beside", "between")
-#: the target word of a node that has no target furniture
-NO_TARGET = "non"
+from assistant.rdt import DIRECTIONS, DYNAMIC_REFERENCES, NO_TARGET, STRUCTURE_REFERENCES  # noqa: F401 (re-exported)
+from assistant.world.catalogue import category_word, load_catalogue
+
 #: furniture category words the robot recognises (the catalogue's ``word`` values)
 FURNITURE_CATEGORIES = ("table", "chair", "couch", "bed")
-#: references whose node needs no furniture perception (a dynamic description)
-DYNAMIC_REFERENCES = frozenset({"move", "room", "wall", "door", "stop"})
 
-#: single words → canonical word (lower case)
-SYNONYMS: dict[str, str] = {
-    # furniture
-    "sofa": "couch", "settee": "couch", "loveseat": "couch", "sofas": "couch", "couches": "couch",
-    "nightstands": "nightstand", "bedside": "nightstand", "nighttable": "nightstand",
-    "tables": "table", "chairs": "chair", "beds": "bed", "desks": "desk", "armchair": "chair",
-    "stool": "chair", "seat": "chair", "seats": "chair",
-    # rooms and structure
-    "lounge": "living", "walls": "wall", "doorway": "door", "entrance": "door", "doors": "door",
-    "doorways": "door", "rooms": "room", "livingroom": "living", "bedrooms": "bedroom",
-    "pass": "past", "passing": "past", "passed": "past", "towards": "toward",
-    # directions
-    "centre": "center", "middle": "center", "rear": "back", "alongside": "beside",
-    # movement verbs
-    "head": "go", "proceed": "go", "drive": "go", "travel": "go", "roll": "go", "continue": "go",
-    "make": "take", "hang": "take", "rotate": "turn", "steer": "turn",
-    "forwards": "forward",
-    # objects
-    "cup": "mug", "spectacles": "glasses", "eyeglasses": "glasses", "notebook": "laptop", "computer": "laptop",
-    "screen": "monitor", "figurine": "statue", "sculpture": "statue",
-    # contractions that the corpus writes out
-    "'ll": "will", "ll": "will", "'s": "is", "'re": "are",
-}
-
-#: two-word phrases → one canonical word
-PHRASES: dict[tuple[str, str], str] = {
-    ("night", "stand"): "nightstand",
-    ("night", "table"): "nightstand",
-    ("bedside", "table"): "nightstand",
-    ("end", "table"): "nightstand",
-    ("coffee", "table"): "table",
-    ("dining", "table"): "table",
-    ("dinner", "table"): "table",
-    ("kitchen", "table"): "table",
-    ("side", "table"): "table",
-    ("writing", "desk"): "desk",
-    ("arm", "chair"): "chair",
-    ("easy", "chair"): "chair",
-    ("computer", "monitor"): "monitor",
-    ("computer", "screen"): "monitor",
-    ("eyeglass", "case"): "glasses",
-}
-
+_WORDS = load_catalogue().words
+#: single words → canonical word (lower case); the catalogue's ``words.synonyms``
+SYNONYMS: dict[str, str] = _WORDS.synonyms
+#: two-word phrases → one canonical word; the catalogue's ``words.phrases``
+PHRASES: dict[tuple[str, str], str] = _WORDS.phrases
+#: every one-word furniture word the grounders understand, with the category word it grounds to
+#: (``nightstand`` → ``table``); from the catalogue's ``words.furniture``
+FURNITURE_WORDS: dict[str, str] = {word: category_word(categories[0])
+                                   for word, categories in _WORDS.furniture.items() if " " not in word}
 #: furniture words that ground to the ``table`` category (table-like supports)
-TABLE_LIKE = frozenset({"table", "nightstand", "desk", "dresser", "counter", "sideboard",
-                        "shelf", "bench", "cabinet", "stand", "bureau"})
-#: every furniture word the grounders understand, with the category it grounds to
-FURNITURE_WORDS: dict[str, str] = {**{w: "table" for w in TABLE_LIKE},
-                                   "chair": "chair", "couch": "couch", "bed": "bed"}
-
+TABLE_LIKE = frozenset(w for w, c in FURNITURE_WORDS.items() if c == "table")
 #: words said with a furniture word that describe which one ("the round table", "the big
-#: table", "the coffee table") → a canonical descriptor; the executor compares them with what
-#: it perceives (size class, footprint) to choose among several of a kind
-DESCRIPTORS: dict[str, str] = {
-    # size
-    "small": "small", "little": "small", "short": "small", "low": "small", "tiny": "small",
-    "big": "large", "large": "large", "long": "large", "huge": "large", "tall": "large",
-    # shape
-    "round": "round", "circular": "round", "square": "square", "hexagon": "hexagon",
-    "hexagonal": "hexagon", "six-sided": "hexagon",
-    # the kind of table, as furniture catalogues name it
-    "coffee": "coffee", "dinner": "dinner", "dining": "dinner", "kitchen": "dinner",
-}
+#: table", "the coffee table") → a canonical descriptor (the catalogue's ``words.descriptors``);
+#: the executor compares them with what it perceives (size class, footprint) to choose among
+#: several of a kind
+DESCRIPTORS: dict[str, str] = _WORDS.descriptors
 
 #: words a person may say that carry no grounding on their own (for the ``unused`` list)
 FILLERS = frozenset({

@@ -23,7 +23,7 @@ from collections.abc import Iterable, Sequence
 
 import pycrfsuite
 from rapidfuzz.distance import Levenshtein
-from sklearn.exceptions import NotFittedError
+from assistant.errors import NotFittedError
 
 from assistant.language.tree import OUTSIDE, ChunkTree
 

@@ -26,7 +26,7 @@ from nltk.tag.brill import brill24, fntbl37, nltkdemo18
 from nltk.tag.brill_trainer import BrillTaggerTrainer
 from rapidfuzz import process
 from rapidfuzz.distance import OSA
-from sklearn.exceptions import NotFittedError
+from assistant.errors import NotFittedError
 
 __all__ = ["SemanticPosTagger", "load_lexicon", "accuracy_of"]
 

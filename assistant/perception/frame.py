@@ -34,8 +34,8 @@ class FrameParams:
     the real Kinect frames have at most 8 of 480 empty bottom rows (registration border).
 
     ``threads``: the OpenMP (open3d) and BLAS (numpy) threads while a frame is analysed (None:
-    leave them as the process has them). ``assistant.perception`` sets ``OMP_NUM_THREADS=1`` if
-    it is imported before open3d, but the simulator imports open3d first, and then open3d used
+    leave them as the process has them). The command line sets ``OMP_NUM_THREADS=1`` at start-up
+    (:func:`assistant.runtime.limit_openmp_threads`), but when open3d is loaded first it used
     both cores: measured on the loaded 2-core machine, 56 ms of CPU per simulated frame instead
     of 18 ms; numpy's two BLAS threads doubled the real frames' CPU time (32 → 58 ms;
     ``bench_perception.py --threads``)."""

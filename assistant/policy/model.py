@@ -57,6 +57,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from assistant.errors import NotFittedError
 from assistant.geometry import Pose2D, point_in_polygon, wrap_angle
 from assistant.policy.demonstration import Demonstration, EnvironmentEntity, environment_grid
 from assistant.policy.freespace import FreeSpace
@@ -66,10 +67,6 @@ ROT_WORDS = ("none", "left", "around", "right")
 _ROT_ANGLES = np.array([0.0, math.pi / 2, math.pi, -math.pi / 2])
 VIEWER_ROBOT = "robot"
 STOP_RULES = ("score-falls", "min-step")
-
-
-class NotFittedError(ValueError, AttributeError):
-    """A policy model used before ``fit``."""
 
 
 def rotation_memberships(angle_rad: float) -> np.ndarray:

@@ -1,5 +1,7 @@
 """The RDT nodes a policy model is trained for (dissertation Table 5-1).
 
+The :class:`~assistant.rdt.RDT` type itself is a core term (:mod:`assistant.rdt`).
+
 An RDT name is ``reference-direction-target``: ``couch-front-table`` is "the table in front of
 the couch"; ``move`` and ``robot`` references mean the robot itself (its pose when the node
 began), ``non`` means no target (the robot goes to a place, not to a thing).
@@ -7,56 +9,9 @@ began), ``non`` means no target (the robot goes to a place, not to a thing).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from assistant.rdt import RDT, parse_rdt
 
-from assistant.errors import AssistantError
-
-#: reference words that mean the robot itself
-ROBOT_REFERENCES = ("move", "robot")
-#: reference words that are floor-plan structures rather than furniture
-STRUCTURE_REFERENCES = ("room", "wall")
-
-
-@dataclass(frozen=True)
-class RDT:
-    """One RDT node: ``reference`` word, ``direction`` word, ``target`` word (``non``: none)."""
-
-    reference: str
-    direction: str
-    target: str
-
-    @classmethod
-    def parse(cls, name: str) -> "RDT":
-        parts = str(name).strip().lower().split("-")
-        if len(parts) != 3 or not all(parts):
-            raise AssistantError(f"{name!r} is not an RDT name: write reference-direction-target, "
-                                 f"e.g. couch-front-table or move-left-non")
-        return cls(*parts)
-
-    @property
-    def name(self) -> str:
-        return f"{self.reference}-{self.direction}-{self.target}"
-
-    @property
-    def has_target(self) -> bool:
-        return self.target != "non"
-
-    @property
-    def reference_kind(self) -> str:
-        """``robot`` (move/robot), ``room``, ``wall`` or ``furniture``."""
-        if self.reference in ROBOT_REFERENCES:
-            return "robot"
-        if self.reference in STRUCTURE_REFERENCES:
-            return self.reference
-        return "furniture"
-
-    @property
-    def has_reference_entity(self) -> bool:
-        """Whether the WSF has a ``ref`` entity (the robot reference is the OR entity itself)."""
-        return self.reference_kind != "robot"
-
-    def __str__(self) -> str:
-        return self.name
+__all__ = ["RDT", "TABLE_5_1", "TABLE_RDTS", "parse_rdt"]
 
 
 #: (number, natural-language description, RDT) — dissertation Table 5-1
@@ -78,6 +33,3 @@ TABLE_5_1: tuple[tuple[int, str, str], ...] = (
 
 TABLE_RDTS: tuple[str, ...] = tuple(name for _, _, name in TABLE_5_1)
 
-
-def parse_rdt(name: str | RDT) -> RDT:
-    return name if isinstance(name, RDT) else RDT.parse(name)

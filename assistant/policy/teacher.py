@@ -42,10 +42,8 @@ from assistant.geometry import Pose2D, angle_difference, point_in_polygon, wrap_
 from assistant.policy.demonstration import EnvironmentEntity
 from assistant.policy.freespace import FreeSpace
 from assistant.policy.rdt import RDT, parse_rdt
+from assistant.world import load_catalogue
 
-TABLE_CATEGORIES = ("small table", "large table")
-CATEGORY_OF_WORD = {"table": TABLE_CATEGORIES, "couch": ("couch",), "bed": ("bed",), "chair": ("chair",),
-                    "desk": ("large table",)}
 STANDOFF_M = 0.5      # robot centre to a table's edge when standing at it
 WALL_STANDOFF_M = 0.7  # robot centre to a wall's face
 CLEARANCE_M = 0.3     # a teacher's goal keeps the robot's centre this far from obstacles
@@ -72,7 +70,7 @@ def _centre(item: EnvironmentEntity) -> np.ndarray:
 
 
 def _of_word(environment, word: str) -> list[EnvironmentEntity]:
-    cats = CATEGORY_OF_WORD.get(word, (word,))
+    cats = load_catalogue().categories_of(word) or (word,)
     return [e for e in environment if e.kind == "short_term" and (e.category in cats or e.name == word)]
 
 
@@ -140,94 +138,115 @@ def teacher_goal(rdt: str | RDT, environment, start: Pose2D, free: FreeSpace | N
     rdt = parse_rdt(rdt)
     env = tuple(environment)
     free = free or FreeSpace(env)
-    name = rdt.name
-    start_xy = np.array([start.x, start.y])
     if rdt.reference_kind == "robot" and not rdt.has_target:
-        if rdt.direction in ("front", "forward"):
-            return TeacherGoal(name, None, None, _advance(free, start, start.theta, 1.0, 0.3))
-        turn = {"left": math.pi / 2, "right": -math.pi / 2, "back": math.pi}.get(rdt.direction)
-        if turn is None:
-            raise NoInstanceError(f"no teacher rule for {name}")
-        heading = wrap_angle(start.theta + turn)
-        try:
-            goal = _advance(free, start, heading, 0.5, 0.2)
-        except NoInstanceError:
-            goal = Pose2D(start.x, start.y, heading)
-        return TeacherGoal(name, None, None, goal)
-
+        return _robot_move_goal(rdt, start, free)
     if rdt.reference_kind == "robot":  # robot-left-table, robot-right-table
-        want = {"left": math.pi / 2, "right": -math.pi / 2, "front": 0.0, "back": math.pi}[rdt.direction]
-        room = _room_of(free, start.x, start.y)
-        best, best_cost = None, math.inf
-        for item in _of_word(env, rdt.target):
-            if room is not None and item.room not in (None, room):
-                continue
-            c = _centre(item)
-            bearing = angle_difference(math.atan2(c[1] - start.y, c[0] - start.x), start.theta)
-            off = abs(angle_difference(bearing, want))
-            if off > math.radians(60):
-                continue
-            cost = off + 0.1 * float(np.linalg.norm(c - start_xy))
-            if cost < best_cost:
-                best, best_cost = item, cost
-        if best is None:
-            raise NoInstanceError(f"no {rdt.target} on the robot's {rdt.direction} in its room")
-        c = _centre(best)
-        side = math.atan2(start.y - c[1], start.x - c[0])
-        return TeacherGoal(name, None, best.id, approach(best, side, free))
-
+        return _robot_side_goal(rdt, env, start, free)
     if rdt.reference_kind == "room":
-        room = _room_of(free, start.x, start.y)
-        rooms = {e.room: e for e in env if e.id.startswith("room:")}
-        if room is None or any(w in room.lower() for w in HALLWAY_WORDS):
-            named = [r for r in rooms if not any(w in r.lower() for w in HALLWAY_WORDS)]
-            if not named:
-                raise NoInstanceError("no room to go to the centre of")
-            room = min(named, key=lambda r: np.linalg.norm(_centre(rooms[r]) - start_xy))
-        item = rooms[room]
-        c = _centre(item)
-        p = _nearest_free(free, c)
-        heading = math.atan2(p[1] - start.y, p[0] - start.x) if np.linalg.norm(p - start_xy) > 0.3 else start.theta
-        return TeacherGoal(name, item.id, None, Pose2D(float(p[0]), float(p[1]), heading))
-
+        return _room_centre_goal(rdt, env, start, free)
     if rdt.reference_kind == "wall":
-        room = _room_of(free, start.x, start.y)
-        walls = [e for e in env if e.id.startswith("wall:") and (room is None or e.room == room)]
-        u = np.array([math.cos(start.theta), math.sin(start.theta)])
-        hit_item, hit_d = None, math.inf
-        for step in np.arange(0.05, 15.0, 0.05):
-            p = start_xy + step * u
-            for item in walls:
-                if point_in_polygon(p[None], item.polygon_array())[0]:
-                    hit_item, hit_d = item, step
-                    break
-            if hit_item is not None or (free.clearance(p[None])[0] == 0 and not walls):
+        return _wall_goal(rdt, env, start, free)
+    return _furniture_goal(rdt, env, start, free, instance)
+
+
+def _robot_move_goal(rdt: RDT, start: Pose2D, free: FreeSpace) -> TeacherGoal:
+    """move-front-non: a metre ahead; move-left/right/back-non: turn, then half a metre on."""
+    if rdt.direction in ("front", "forward"):
+        return TeacherGoal(rdt.name, None, None, _advance(free, start, start.theta, 1.0, 0.3))
+    turn = {"left": math.pi / 2, "right": -math.pi / 2, "back": math.pi}.get(rdt.direction)
+    if turn is None:
+        raise NoInstanceError(f"no teacher rule for {rdt.name}")
+    heading = wrap_angle(start.theta + turn)
+    try:
+        goal = _advance(free, start, heading, 0.5, 0.2)
+    except NoInstanceError:
+        goal = Pose2D(start.x, start.y, heading)
+    return TeacherGoal(rdt.name, None, None, goal)
+
+
+def _robot_side_goal(rdt: RDT, env, start: Pose2D, free: FreeSpace) -> TeacherGoal:
+    """robot-left-table: the target of the word on that side of the robot in its room (within
+    60°, the least off and nearest), approached from the robot's side."""
+    want = {"left": math.pi / 2, "right": -math.pi / 2, "front": 0.0, "back": math.pi}[rdt.direction]
+    start_xy = np.array([start.x, start.y])
+    room = _room_of(free, start.x, start.y)
+    best, best_cost = None, math.inf
+    for item in _of_word(env, rdt.target):
+        if room is not None and item.room not in (None, room):
+            continue
+        c = _centre(item)
+        bearing = angle_difference(math.atan2(c[1] - start.y, c[0] - start.x), start.theta)
+        off = abs(angle_difference(bearing, want))
+        if off > math.radians(60):
+            continue
+        cost = off + 0.1 * float(np.linalg.norm(c - start_xy))
+        if cost < best_cost:
+            best, best_cost = item, cost
+    if best is None:
+        raise NoInstanceError(f"no {rdt.target} on the robot's {rdt.direction} in its room")
+    c = _centre(best)
+    side = math.atan2(start.y - c[1], start.x - c[0])
+    return TeacherGoal(rdt.name, None, best.id, approach(best, side, free))
+
+
+def _room_centre_goal(rdt: RDT, env, start: Pose2D, free: FreeSpace) -> TeacherGoal:
+    """room-center-non: the free floor nearest the centre of the robot's room (from a hallway,
+    the nearest named room)."""
+    start_xy = np.array([start.x, start.y])
+    room = _room_of(free, start.x, start.y)
+    rooms = {e.room: e for e in env if e.id.startswith("room:")}
+    if room is None or any(w in room.lower() for w in HALLWAY_WORDS):
+        named = [r for r in rooms if not any(w in r.lower() for w in HALLWAY_WORDS)]
+        if not named:
+            raise NoInstanceError("no room to go to the centre of")
+        room = min(named, key=lambda r: np.linalg.norm(_centre(rooms[r]) - start_xy))
+    item = rooms[room]
+    p = _nearest_free(free, _centre(item))
+    heading = math.atan2(p[1] - start.y, p[0] - start.x) if np.linalg.norm(p - start_xy) > 0.3 else start.theta
+    return TeacherGoal(rdt.name, item.id, None, Pose2D(float(p[0]), float(p[1]), heading))
+
+
+def _wall_goal(rdt: RDT, env, start: Pose2D, free: FreeSpace) -> TeacherGoal:
+    """wall-front-non: facing the wall straight ahead, ``WALL_STANDOFF_M`` from its face."""
+    start_xy = np.array([start.x, start.y])
+    room = _room_of(free, start.x, start.y)
+    walls = [e for e in env if e.id.startswith("wall:") and (room is None or e.room == room)]
+    u = np.array([math.cos(start.theta), math.sin(start.theta)])
+    hit_item, hit_d = None, math.inf
+    for step in np.arange(0.05, 15.0, 0.05):
+        p = start_xy + step * u
+        for item in walls:
+            if point_in_polygon(p[None], item.polygon_array())[0]:
+                hit_item, hit_d = item, step
                 break
-        if hit_item is None:
-            raise NoInstanceError("no wall straight ahead of the robot in its room")
-        poly = hit_item.polygon_array()
-        lo, hi = poly.min(axis=0), poly.max(axis=0)
-        size = hi - lo
-        hit = start_xy + hit_d * u
-        if size[0] >= size[1]:  # wall along x: face it along ±y
-            normal = np.array([0.0, 1.0 if u[1] > 0 else -1.0])
-            face = lo[1] if normal[1] > 0 else hi[1]
-            p = np.array([hit[0], face - normal[1] * WALL_STANDOFF_M])
-        else:
-            normal = np.array([1.0 if u[0] > 0 else -1.0, 0.0])
-            face = lo[0] if normal[0] > 0 else hi[0]
-            p = np.array([face - normal[0] * WALL_STANDOFF_M, hit[1]])
-        q = _nearest_free(free, p)
-        if np.linalg.norm(q - p) > 0.3:
-            raise NoInstanceError("furniture stands between the robot and the wall ahead")
-        p = q
-        return TeacherGoal(name, hit_item.id, None, Pose2D(float(p[0]), float(p[1]),
+        if hit_item is not None or (free.clearance(p[None])[0] == 0 and not walls):
+            break
+    if hit_item is None:
+        raise NoInstanceError("no wall straight ahead of the robot in its room")
+    poly = hit_item.polygon_array()
+    lo, hi = poly.min(axis=0), poly.max(axis=0)
+    size = hi - lo
+    hit = start_xy + hit_d * u
+    if size[0] >= size[1]:  # wall along x: face it along ±y
+        normal = np.array([0.0, 1.0 if u[1] > 0 else -1.0])
+        face = lo[1] if normal[1] > 0 else hi[1]
+        p = np.array([hit[0], face - normal[1] * WALL_STANDOFF_M])
+    else:
+        normal = np.array([1.0 if u[0] > 0 else -1.0, 0.0])
+        face = lo[0] if normal[0] > 0 else hi[0]
+        p = np.array([face - normal[0] * WALL_STANDOFF_M, hit[1]])
+    q = _nearest_free(free, p)
+    if np.linalg.norm(q - p) > 0.3:
+        raise NoInstanceError("furniture stands between the robot and the wall ahead")
+    return TeacherGoal(rdt.name, hit_item.id, None, Pose2D(float(q[0]), float(q[1]),
                                                            math.atan2(normal[1], normal[0])))
 
-    # a furniture reference and a target table
-    refs = _of_word(env, rdt.reference)
+
+def _furniture_goal(rdt: RDT, env, start: Pose2D, free: FreeSpace, instance: int) -> TeacherGoal:
+    """couch-front-table and the like: the ``instance``-th (reference, target) pair, the target
+    approached from the reference's side named by the direction."""
     choices = []
-    for ref in refs:
+    for ref in _of_word(env, rdt.reference):
         tar = _furniture_target(rdt, ref, env)
         if tar is not None:
             choices.append((ref, tar))
@@ -243,8 +262,8 @@ def teacher_goal(rdt: str | RDT, environment, start: Pose2D, free: FreeSpace | N
         side = math.atan2(rc[1] - tc[1], rc[0] - tc[0])
         facing = ref.orientation if ref.orientation is not None else side + math.pi
         left = rc + np.array([math.cos(facing + math.pi / 2), math.sin(facing + math.pi / 2)])
-        return TeacherGoal(name, ref.id, tar.id, approach(tar, side, free, prefer_xy=left))
-    return TeacherGoal(name, ref.id, tar.id, approach(tar, side, free))
+        return TeacherGoal(rdt.name, ref.id, tar.id, approach(tar, side, free, prefer_xy=left))
+    return TeacherGoal(rdt.name, ref.id, tar.id, approach(tar, side, free))
 
 
 def _furniture_target(rdt: RDT, ref: EnvironmentEntity, env) -> EnvironmentEntity | None:

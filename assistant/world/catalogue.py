@@ -54,10 +54,39 @@ class ObjectModel:
 
 
 @dataclass(frozen=True)
+class Words:
+    """The word tables of ``catalogue.yaml``'s ``words`` section (all lower case).
+
+    ``furniture``: furniture word → the categories it can mean (``desk`` → large table);
+    ``sizes``: size word → category (``small`` → small table); ``support_names``: category →
+    the word a description uses for it; ``synonyms``: word → canonical word; ``phrases``: two
+    words → one canonical word; ``descriptors``: word → canonical descriptor.
+    """
+
+    furniture: dict[str, tuple[str, ...]]
+    sizes: dict[str, str]
+    support_names: dict[str, str]
+    synonyms: dict[str, str]
+    phrases: dict[tuple[str, str], str]
+    descriptors: dict[str, str]
+
+
+@dataclass(frozen=True)
 class Catalogue:
     models: dict[str, FurnitureModel]
     objects: dict[str, ObjectModel]
     category_words: dict[str, str]
+    words: Words
+
+    def categories_of(self, word: str) -> tuple[str, ...]:
+        """The catalogue categories a furniture word can mean (``()`` when it is none)."""
+        return self.words.furniture.get(word.strip().lower(), ())
+
+    def suggested_category(self, word: str) -> str | None:
+        """The one category a furniture word points to (``desk`` → large table, ``end table`` →
+        small table), or None when it can mean several (``table``, ``shelf``) or none."""
+        categories = self.categories_of(word)
+        return categories[0] if len(categories) == 1 else None
 
     def model(self, name: str) -> FurnitureModel:
         try:
@@ -117,5 +146,39 @@ def load_catalogue() -> Catalogue:
         words = tuple(" ".join(str(w).lower().split()) for w in s.get("words", ()))
         objects[name] = ObjectModel(name, float(s["length"]), float(s["width"]), float(s["height"]),
                                     words, number)
-    words = {name: spec["word"] for name, spec in data["categories"].items()}
-    return Catalogue(models=models, objects=objects, category_words=words)
+    category_words = {name: spec["word"] for name, spec in data["categories"].items()}
+    return Catalogue(models=models, objects=objects, category_words=category_words,
+                     words=parse_words(data.get("words"), where))
+
+
+def parse_words(data, where: str) -> Words:
+    """The ``words`` section of a catalogue file (``where`` names it in errors) as :class:`Words`."""
+    if not isinstance(data, dict):
+        raise DataFileError(where, "words", "expected a mapping of word tables")
+
+    def table(key: str) -> dict:
+        value = data.get(key)
+        if not isinstance(value, dict):
+            raise DataFileError(where, f"words.{key}", "expected a mapping of words")
+        return {str(k).lower(): v for k, v in value.items()}
+
+    furniture = {}
+    for word, cats in table("furniture").items():
+        if not isinstance(cats, list) or not cats or any(c not in CATEGORIES for c in cats):
+            raise DataFileError(where, f"words.furniture.{word}", f"expected a list of {CATEGORIES}")
+        furniture[word] = tuple(cats)
+    phrases = {}
+    for phrase, canonical in table("phrases").items():
+        parts = tuple(phrase.split())
+        if len(parts) != 2:
+            raise DataFileError(where, f"words.phrases.{phrase}", "expected two words")
+        phrases[parts] = str(canonical).lower()
+    sizes = {k: str(v) for k, v in table("sizes").items()}
+    for word, category in sizes.items():
+        if category not in CATEGORIES:
+            raise DataFileError(where, f"words.sizes.{word}", f"expected one of {CATEGORIES}")
+    return Words(furniture=furniture, sizes=sizes,
+                 support_names={k: str(v) for k, v in table("support_names").items()},
+                 synonyms={k: str(v).lower() for k, v in table("synonyms").items()},
+                 phrases=phrases,
+                 descriptors={k: str(v).lower() for k, v in table("descriptors").items()})

@@ -83,6 +83,16 @@ class Entity:
         return pts.mean(axis=0) if len(pts) else np.array([math.nan, math.nan])
 
     @property
+    def centre_m(self) -> tuple[float, float]:
+        """The best centre estimate (metres): the detector's fused centre when it gave one
+        (``attributes["x"]``, ``["y"]``), else the centroid of the cells."""
+        attrs = self.attributes or {}
+        if "x" in attrs and "y" in attrs:
+            return float(attrs["x"]), float(attrs["y"])
+        c = self.centroid_m
+        return float(c[0]), float(c[1])
+
+    @property
     def area_m2(self) -> float:
         return len(self.cells) * self.grid.resolution_m ** 2
 

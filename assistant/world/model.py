@@ -9,6 +9,7 @@ evaluation scores against, never read by the executor.
 from __future__ import annotations
 
 from functools import cached_property
+from typing import TYPE_CHECKING
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -16,6 +17,9 @@ import numpy as np
 from assistant.errors import UnknownNameError
 from assistant.geometry import Pose2D, box_polygon, point_in_polygon, rectangle
 from assistant.world.catalogue import FurnitureModel, load_catalogue
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 
 @dataclass(frozen=True)
@@ -170,6 +174,37 @@ class Floorplan:
     def passages_of(self, room_name: str) -> list[Door]:
         """The ways into a room: its doors, then its open-plan :attr:`openings`."""
         return self.doors_of(room_name) + [d for d in self.openings if room_name in d.connects]
+
+    def room_graph(self, openings: bool = True) -> "nx.Graph":
+        """The rooms joined by the ways a person walks between them: the one room graph.
+
+        A networkx graph with a node per room (attribute ``centre``) and an edge per pair of
+        rooms joined by a door or, with ``openings``, an open-plan :attr:`openings` passage;
+        edge attributes: ``door`` (the :class:`Door`), ``kind`` (``"door"`` or ``"opening"``)
+        and ``weight`` (metres from one room's centre through the passage's centre to the
+        other's). Doors to ``outside`` are left out (the robot never leaves the home); of two
+        doors between the same rooms, the shorter way is kept. Built fresh on each call (a
+        floor plan is immutable; callers that route often keep the graph).
+        """
+        import networkx as nx
+
+        graph = nx.Graph()
+        for room in self.rooms:
+            graph.add_node(room.name, centre=tuple(room.centre))
+        passages = [(d, "door") for d in self.doors]
+        if openings:
+            passages += [(d, "opening") for d in self.openings]
+        for door, kind in passages:
+            a, b = door.connects
+            if a not in graph or b not in graph:
+                continue
+            ca, cb = (np.asarray(graph.nodes[n]["centre"]) for n in (a, b))
+            c = np.asarray(door.centre)
+            weight = float(np.linalg.norm(ca - c) + np.linalg.norm(cb - c))
+            if graph.has_edge(a, b) and graph[a][b]["weight"] <= weight:
+                continue
+            graph.add_edge(a, b, door=door, kind=kind, weight=weight)
+        return graph
 
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of rooms and walls, metres."""

@@ -2,7 +2,7 @@ import argparse
 
 import pytest
 
-from assistant.dialogue.evaluation import check, load_conversations
+from assistant.eval.dialogue import check, load_conversations
 from assistant.dialogue.manager import Turn
 from assistant.dialogue.memory import ObjectMemory
 from assistant.errors import DataFileError
@@ -33,7 +33,7 @@ def test_check_reports_each_problem():
 
 
 def test_eval_module_contract():
-    from assistant.dialogue import evaluation
+    from assistant.eval import dialogue as evaluation
 
     parser = argparse.ArgumentParser()
     evaluation.add_arguments(parser)

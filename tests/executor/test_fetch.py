@@ -4,7 +4,6 @@ the parser; sensed perception is measured by `assistant eval fetch`, not here.""
 from __future__ import annotations
 
 import inspect
-import math
 
 import numpy as np
 import pytest
@@ -50,25 +49,6 @@ def test_static_node_ends_facing_the_right_table(apartment, policies):
 
     assert is_visible(object_visibility(frame, "glasses case"))
     assert 0 < result.sim_seconds < 300
-
-
-def test_left_of_the_bed_is_the_beds_own_left(apartment, policies):
-    task = FetchTask(apartment, OracleFurniture(apartment, "original"), policies)
-
-    class _Still:  # the pose is all the choice reads
-        def pose(self, robot):
-            from assistant.geometry import Pose2D
-
-            return Pose2D(5.0, -1.8, -math.pi / 2)
-
-    task.navigator = _Still()
-    task._robot = None
-    from assistant.grounding import RDT
-
-    left = task._choose_pair(RDT("bed", "left", "table"), "bedroom")
-    right = task._choose_pair(RDT("bed", "right", "table"), "bedroom")
-    # the bed faces south (-90°): its left is east (coffeetable_2), its right west (roundtable_2)
-    assert left[1].id == "coffeetable_2" and right[1].id == "roundtable_2"
 
 
 def test_unknown_room_and_empty_plan_are_result_values(apartment, policies):

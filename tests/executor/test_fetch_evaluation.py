@@ -9,7 +9,7 @@ from collections import Counter
 
 import pytest
 
-from assistant.executor import evaluation
+from assistant.eval import fetch as evaluation
 
 
 def test_dev_set_covers_every_object_home_scene_and_kind(all_worlds):

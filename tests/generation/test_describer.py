@@ -74,7 +74,7 @@ def test_unknown_and_missing_objects(apartment):
 
 
 def test_all_48_study_descriptions_are_true_and_unrepeated(generation_model):
-    from assistant.generation.evaluation import evaluate
+    from assistant.eval.generation import evaluate
 
     report = evaluate(corpus_paths=None, parse=False)
     rows = report["rows"]

@@ -1,7 +1,7 @@
 from collections import Counter
 
 import pytest
-from sklearn.exceptions import NotFittedError
+from assistant.errors import NotFittedError
 
 from assistant.language.chunker import NestedChunker, level_tags, merge_levels, repair_labels
 from assistant.language.corpus import read_corpus

@@ -23,7 +23,7 @@ def test_eval_tagging_table(tiny_corpus, capsys):
 
 
 def test_coverage_names_what_the_training_corpus_lacks():
-    from assistant.language.evaluation import coverage
+    from assistant.eval.tagging import coverage
     from assistant.language.tree import ChunkTree
 
     train = [ChunkTree.from_labels(["go", "left"], ["VB", "DIR"], ["IRMRP", "IRMRP"])]

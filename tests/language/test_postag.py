@@ -1,5 +1,5 @@
 import pytest
-from sklearn.exceptions import NotFittedError
+from assistant.errors import NotFittedError
 
 from assistant.language.postag import SemanticPosTagger, load_lexicon
 

@@ -41,7 +41,7 @@ def ref():
 @pytest.fixture(scope="module")
 def sim_frames():
     """Two simulated 640×480 views with furniture in view (scenes 1 and 3 of Table 3-9)."""
-    from assistant.perception.scenes import SCENES, viewpoints
+    from assistant.eval.perception_scenes import SCENES, viewpoints
     from assistant.sim.renderer import DepthRenderer
     from assistant.world import load_world
 

@@ -67,7 +67,7 @@ def test_eval_perception_rejects_a_range_it_cannot_use(capsys):
 
 
 def test_the_range_knob_sets_the_points_kept_and_the_grid():
-    from assistant.perception.evaluation import _frame_params
+    from assistant.eval.perception import _frame_params
     from assistant.perception.samples import grid_size
 
     p = _frame_params(5.5).samples

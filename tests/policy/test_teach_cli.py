@@ -54,7 +54,7 @@ def test_escape_aborts_without_saving(tmp_path, capsys):
 def test_eval_policy_one_rdt(capsys):
     import argparse
 
-    from assistant.policy import evaluation
+    from assistant.eval import policy as evaluation
 
     parser = argparse.ArgumentParser()
     parser.add_argument("--json", action="store_true")

@@ -48,3 +48,20 @@ def test_the_study_homes_open_plans(all_worlds):
     # the apartment's rooms are all joined by doors
     assert all_worlds["apartment"].floorplan.openings == ()
     assert dataclasses.is_dataclass(living)
+
+
+def test_room_graph_joins_rooms_by_doors_and_openings(all_worlds):
+    """One room graph: doors always, open-plan openings unless asked not to."""
+    for world in all_worlds.values() if isinstance(all_worlds, dict) else all_worlds:
+        plan = world.floorplan
+        graph = plan.room_graph()
+        assert set(graph.nodes) == set(plan.room_names)
+        kinds = {data["kind"] for _, _, data in graph.edges(data=True)}
+        assert kinds <= {"door", "opening"}
+        doors_only = plan.room_graph(openings=False)
+        assert all(d["kind"] == "door" for _, _, d in doors_only.edges(data=True))
+        assert doors_only.number_of_edges() + len(plan.openings) >= graph.number_of_edges()
+        if plan.openings:
+            assert any(d["kind"] == "opening" for _, _, d in graph.edges(data=True))
+        for _, _, data in graph.edges(data=True):
+            assert data["weight"] > 0 and "outside" not in data["door"].connects

@@ -36,6 +36,8 @@ import math
 import statistics
 import time
 
+from assistant.world import load_catalogue
+
 STUDY_WORLDS = ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house")
 SCENES = ("original", "modified")
 MIN_DIRECTION = 0.4
@@ -266,7 +268,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
             stated_object = obj.name
             stated_support = next((n.words.get("support") for n in result.selected if n.kind == "support"),
                                   None)
-            if stated_support in SIZE_WORDS:  # "end table" is a table
+            if stated_support in _size_words():  # "end table" is a table
                 stated_support = "table"
             rdts = [RDT.parse(r) for r in sorted(meant)]
         said_room = any(n.kind == "room" for n in result.selected)
@@ -366,13 +368,16 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
     return {"rows": rows, "summary": summary, "searches": done}
 
 
-#: support words the generator may use for size, and the catalogue category each one claims
-SIZE_WORDS = {"desk": "large table", "nightstand": "small table", "end table": "small table"}
+def _size_words() -> dict[str, str]:
+    """Table words that claim one size (``desk`` → large table), from the catalogue."""
+    catalogue = load_catalogue()
+    return {w: c for w in catalogue.words.furniture
+            if (c := catalogue.suggested_category(w)) in ("small table", "large table")}
 
 
 def _said_support_word(text: str) -> str | None:
     t = " ".join(text.lower().split())
-    for word in SIZE_WORDS:
+    for word in _size_words():
         if f"the {word}" in t:
             return word
     return None
@@ -382,14 +387,14 @@ def _support_size_problem(text: str, support) -> str | None:
     word = _said_support_word(text)
     if word is None:
         return None
-    if support.category != SIZE_WORDS[word]:
+    if support.category != _size_words()[word]:
         return f"said {word!r} for a {support.category}"
     return None
 
 
 def _size_rules_out(text: str, item) -> bool:
     word = _said_support_word(text)
-    return word is not None and item.category != SIZE_WORDS[word]
+    return word is not None and item.category != _size_words()[word]
 
 
 def run(args) -> int:

@@ -216,7 +216,7 @@ def orientation_table(train, test, other) -> dict:
 def scene_table(detector=None) -> dict:
     """Table 3-9 over the 16 scenes, with summary figures."""
     from assistant.perception.detector import FurnitureDetector
-    from assistant.perception.scenes import SCENES, evaluate_scene
+    from assistant.eval.perception_scenes import SCENES, evaluate_scene
 
     detector = detector or FurnitureDetector()
     rows = []
