@@ -23,7 +23,14 @@ from dataclasses import replace
 from assistant.grounding.types import ChunkGrounding, ChunkRecord
 from assistant.grounding.vocabulary import canonical_word
 
-__all__ = ["first_named_room", "named_room", "named_room_groundings", "room_names_of"]
+__all__ = ["COMMON_ROOMS", "first_named_room", "named_room", "named_room_groundings", "room_names_of",
+           "unknown_room_named"]
+
+#: rooms people name in homes (lower case); one a home does not have is answered, not guessed
+COMMON_ROOMS = ("kitchen", "bathroom", "bedroom", "living room", "dining room", "office", "hallway",
+                "garage", "laundry room", "basement", "attic", "den", "study", "guest room",
+                "nursery", "playroom", "pantry", "porch", "studio", "meeting room", "family room",
+                "sitting room", "lounge", "toilet", "utility room", "spare room", "cellar")
 
 #: chunk labels that can say where to go (a room *target* phrase, outside or inside a room, the
 #: object phrase and its "in the hallway");
@@ -119,3 +126,13 @@ def first_named_room(records: Sequence[ChunkRecord], world) -> str | None:
         if room is not None:
             return room
     return None
+
+
+def unknown_room_named(words: Sequence[str], world) -> str | None:
+    """The first room of :data:`COMMON_ROOMS` the words name as a goal that the home does not
+    have ("go to the kitchen" in a home without one), or None."""
+    rooms = set(room_names_of(world))
+    if not rooms:
+        return None
+    other = [r for r in COMMON_ROOMS if r not in rooms and not any(r in mine.split() for mine in rooms)]
+    return named_room(words, other, PATH_WORDS - {"from", "of"})

@@ -108,6 +108,16 @@ class Catalogue:
             out[obj.name] = obj.name
         return out
 
+    def number(self, name: str) -> str:
+        """How an object's name is said (:data:`NUMBERS`): the catalogue's ``number`` for a
+        known object; for any other thing, ``plural`` when its name ends like a plural
+        ("scissors", "papers"), else ``one``."""
+        obj = self.objects.get(" ".join(name.lower().split()))
+        if obj is not None:
+            return obj.number
+        last = name.lower().split()[-1] if name.split() else ""
+        return "plural" if last.endswith("s") and not last.endswith(("ss", "us", "is")) else "one"
+
     def object(self, name: str) -> ObjectModel:
         try:
             return self.objects[name]
