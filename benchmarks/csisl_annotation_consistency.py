@@ -39,7 +39,7 @@ def main(argv=None) -> int:
     from assistant.cli.common import print_table
     from assistant.language.consistency import consistency_report
     from assistant.language.corpus import read_corpus
-    from assistant.eval.tagging import _cross_validate
+    from assistant.eval.tagging import cross_validate
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--csisl", type=Path, default=ROOT.parent / "shared" / "realdata" / "csisl",
@@ -63,7 +63,7 @@ def main(argv=None) -> int:
         report = consistency_report(trees)
         if args.folds > 1:
             started = time.perf_counter()
-            cv = _cross_validate(trees, args.folds)
+            cv = cross_validate(trees, args.folds)
             report["cv"] = (cv["chunk_accuracy"], cv["chunk_accuracy_gold_pos"], time.perf_counter() - started)
         reports[name] = report
     names = list(reports)

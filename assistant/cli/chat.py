@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import argparse
 
+from assistant.cli.common import seed_int
+
 PROMPT = "you> "
 
 
@@ -35,11 +37,42 @@ def register(subparsers) -> None:
                         help="object memory file (default: DATA/memory.json; DATA is $ASSISTANT_DATA or "
                              "~/.local/share/assistant)")
     parser.add_argument("--transcripts", metavar="DIR", help="where transcripts go (default: DATA/transcripts)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed")
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed")
+    add_speech_arguments(parser)
     parser.set_defaults(handler=run)
+
+
+def add_speech_arguments(parser) -> None:
+    """``--speech`` and its options (docs/speech.md)."""
+    group = parser.add_argument_group("speech", "talk and listen instead of typing (docs/speech.md)")
+    group.add_argument("--speech", action="store_true",
+                       help="speak every reply and listen to the microphone (or --audio-in)")
+    group.add_argument("--audio-in", metavar="FILE|DIR",
+                       help="take the utterances from a WAV file or a folder of them (name order)")
+    group.add_argument("--asr", choices=("pocketsphinx", "vosk"), default="pocketsphinx",
+                       help="speech recogniser (default pocketsphinx: needs no download)")
+    group.add_argument("--asr-model", metavar="DIR", help="the vosk model folder (with --asr vosk)")
+    group.add_argument("--voice", default="en-us", help="espeak-ng voice (default en-us; `espeak-ng --voices=en`)")
+    group.add_argument("--rate", type=int, default=170, help="speaking rate, words per minute (default 170)")
+    group.add_argument("--say-to", metavar="FILE.wav",
+                       help="write everything the robot says to this WAV file instead of playing it")
+    group.add_argument("--confirm-below", type=float, default=None, metavar="P",
+                       help="ask \"Did you say ...?\" below this recognition confidence (default 0.45)")
+    group.add_argument("--mic", default=None, help="microphone: a PortAudio device index or name")
 
 
 def run(args: argparse.Namespace) -> int:
     from assistant.dialogue.repl import ChatSession
+
+    if args.audio_in or args.say_to:
+        args.speech = True
+    if args.asr_model and args.asr != "vosk":
+        from assistant.errors import AssistantError
+
+        raise AssistantError("--asr-model is the folder of a vosk model: add --asr vosk")
+    if args.speech:
+        from assistant.dialogue.speech.session import run as run_speech
+
+        return run_speech(args)
 
     return ChatSession(args).loop()

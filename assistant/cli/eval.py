@@ -1,8 +1,11 @@
 """``assistant eval NAME``: the dissertation's experiments, reproduced on this product.
 
-Each evaluation lives in ``assistant/eval/NAME.py`` and exposes ``add_arguments(parser)`` and
-``run(args) -> int``. This module only knows their names; the chosen evaluation's module is imported when it runs, so neither ``assistant
---help`` nor one evaluation pays for importing the others.
+Each experiment lives in ``assistant/eval/NAME.py``: functions that take plain arguments and
+return the report (rows and summary figures), never printing. Its command-line side lives in
+``assistant/cli/eval_NAME.py``: ``add_arguments(parser)`` registers the options and ``run(args)
+-> int`` calls the experiment and prints its tables, or its report as one JSON object with
+``--json``. This module only knows their names; the chosen evaluation's module is imported when
+it runs, so neither ``assistant --help`` nor one evaluation pays for importing the others.
 """
 
 from __future__ import annotations
@@ -14,13 +17,14 @@ from assistant.errors import AssistantError
 
 #: evaluation name → module that implements it
 EVALUATIONS = {
-    "tagging": "assistant.eval.tagging",
-    "grounding": "assistant.eval.grounding",
-    "perception": "assistant.eval.perception",
-    "policy": "assistant.eval.policy",
-    "fetch": "assistant.eval.fetch",
-    "generation": "assistant.eval.generation",
-    "dialogue": "assistant.eval.dialogue",
+    "tagging": "assistant.cli.eval_tagging",
+    "grounding": "assistant.cli.eval_grounding",
+    "perception": "assistant.cli.eval_perception",
+    "policy": "assistant.cli.eval_policy",
+    "fetch": "assistant.cli.eval_fetch",
+    "generation": "assistant.cli.eval_generation",
+    "dialogue": "assistant.cli.eval_dialogue",
+    "speech": "assistant.cli.eval_speech",
 }
 
 

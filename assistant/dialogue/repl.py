@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
+import os
 import sys
 import threading
 from pathlib import Path
@@ -11,7 +12,7 @@ from pathlib import Path
 from assistant.dialogue.manager import DialogueManager, Turn
 from assistant.dialogue.memory import ObjectMemory, default_data_dir
 from assistant.dialogue.services import Services
-from assistant.fileio import atomic_write_text
+from assistant.fileio import PRIVATE_FILE_MODE, atomic_write_text, private_dir
 
 PROMPT = "you> "
 
@@ -42,6 +43,10 @@ class ChatSession:
         self._leaving = False
         self.interactive = self.stdin.isatty()
         self.records: list[dict] = []
+        # hooks for other front ends (speech): where utterances come from, and who else hears
+        # what the robot says; None: the terminal alone
+        self.read_line = None  # () -> str, raising EOFError at the end
+        self.speak = None  # (sentence) -> None
         self.manager = DialogueManager(self.world, self.scene, self.services, self.memory, say=self._progress,
                                        on_finish=self._finished)
         if getattr(args, "view", False):
@@ -63,7 +68,25 @@ class ChatSession:
             self.out.flush()
 
     def _progress(self, sentence: str) -> None:
-        self._print(f"robot: {sentence}", redraw=True)
+        self._say(sentence, redraw=True)
+
+    def show(self, text: str) -> None:
+        """Print a line of the session (a front end's note, e.g. what speech input heard)."""
+        self._print(text, redraw=True)
+
+    def say(self, sentence: str) -> None:
+        """The robot says ``sentence``: printed, and passed to the ``speak`` hook."""
+        self._say(sentence, redraw=True)
+
+    def _say(self, sentence: str, redraw: bool = False, label: str = "robot: ") -> None:
+        """Print what the robot says (and pass it to the ``speak`` hook)."""
+        self._print(f"{label}{sentence}", redraw=redraw)
+        if self.speak is not None:
+            try:
+                self.speak(sentence)
+            except Exception as error:  # speech out failing must not end the chat
+                self.speak = None
+                self._print(f"(speech output off: {error})")
 
     def _finished(self, turn: Turn) -> None:
         self._record(turn)
@@ -80,8 +103,10 @@ class ChatSession:
         entry = {"time": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="milliseconds")} | turn.to_dict()
         self.records.append(entry)
         try:
+            private_dir(self.transcript_path.parent)
             atomic_write_text(self.transcript_path, json.dumps(
-                {"world": self.world.name, "scene": self.scene, "turns": self.records}, indent=1) + "\n")
+                {"world": self.world.name, "scene": self.scene, "turns": self.records}, indent=1) + "\n",
+                mode=PRIVATE_FILE_MODE)
         except OSError as error:
             self._print(f"(could not save the transcript: {error})")
 
@@ -118,12 +143,15 @@ class ChatSession:
         if readline is None:
             return
         try:
-            self.history_path.parent.mkdir(parents=True, exist_ok=True)
+            private_dir(self.history_path.parent)
             readline.write_history_file(self.history_path)
+            os.chmod(self.history_path, PRIVATE_FILE_MODE)
         except OSError:
             pass
 
     def _read(self) -> str:
+        if self.read_line is not None:
+            return self.read_line()
         if self.interactive:
             return input(PROMPT)
         self.out.write(PROMPT)
@@ -136,7 +164,7 @@ class ChatSession:
     def loop(self) -> int:
         self.services.warm_up(self.world, background=True, scene=self.scene)
         readline = self._setup_readline()
-        self._print(self.manager.greeting())
+        self._say(self.manager.greeting(), label="")
         if self.memory.load_problem:
             self._print(f"(memory: {self.memory.load_problem})")
         self._print("(Ctrl-C stops the robot, Ctrl-C twice leaves, Ctrl-D leaves; transcript: "
@@ -167,7 +195,7 @@ class ChatSession:
                     turn = self.manager.handle(line)
                     self._record(turn)
                     if turn.reply:
-                        self._print(f"robot: {turn.reply}")
+                        self._say(turn.reply)
                     if turn.action == "teach" and turn.outcome == "started":
                         self._teach(turn)
                 except KeyboardInterrupt:  # Ctrl-C without the watcher (not the main thread)

@@ -27,29 +27,15 @@ expectations, no turn raised inside the manager (intent ``error``) and no wait r
 
 from __future__ import annotations
 
-import argparse
 import time
+from collections.abc import Callable
 from pathlib import Path
+
+from assistant.eval.progress import Progress, no_progress
 
 EXPECT_KEYS = {"intent", "action", "outcome", "reply_has", "reply_lacks", "data", "memory"}
 TURN_KEYS = {"say", "wait", "expect", "sleep"}
 CONVERSATION_KEYS = {"name", "world", "scene", "memory", "turns", "covers", "search"}
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from assistant.generation.types import SEARCH_MODES
-
-    parser.add_argument("--corpus", action="append", metavar="PATH",
-                        help="conversation files or folders (default: the repository's corpus/dialogues)")
-    parser.add_argument("--perception", choices=("oracle", "sensed"), default="oracle",
-                        help="furniture perception for fetches (default: oracle)")
-    parser.add_argument("--search", choices=SEARCH_MODES, default="sensed",
-                        help="'where is my X' for an object not in memory: the robot searches (sensed, "
-                             "default) or the world file answers (oracle); a conversation's own "
-                             "'search:' key wins")
-    parser.add_argument("--timeout", type=float, default=180.0, help="seconds a fetch may take before it counts as a hang")
-    parser.add_argument("--only", metavar="NAME", help="run only conversations whose name contains NAME")
-    parser.add_argument("--verbose", action="store_true", help="print every turn")
 
 
 def default_corpus() -> Path:
@@ -131,8 +117,14 @@ def _list(v) -> list:
     return [] if v is None else v if isinstance(v, list) else [v]
 
 
-def run_conversation(conv: dict, services, timeout: float = 180.0, verbose: bool = False, tmp=None) -> dict:
-    """Play one conversation with a fresh manager and memory; its record (``ok``, problems…)."""
+#: called after every turn with (conversation name, what was said or "(wait)", the turn or None)
+TurnHook = Callable[[str, str, object], None]
+
+
+def run_conversation(conv: dict, services, timeout: float = 180.0,
+                     on_turn: TurnHook | None = None) -> dict:
+    """Play one conversation with a fresh manager and memory; its record (``ok``, problems…).
+    ``on_turn`` sees every turn as it ends."""
     import tempfile
 
     from assistant.dialogue.manager import DialogueManager
@@ -175,9 +167,8 @@ def run_conversation(conv: dict, services, timeout: float = 180.0, verbose: bool
             found = check(turn, step.get("expect") or {}, memory, world.name)
             problems += [f"turn {j + 1} ({step.get('say', 'wait')!r}): {p}" for p in found]
             turns.append(None if turn is None else turn.to_dict())
-            if verbose:
-                print(f"  [{conv['name']}] {step.get('say', '(wait)')!r} -> "
-                      f"{None if turn is None else (turn.intent, turn.action, turn.outcome, turn.reply)}")
+            if on_turn is not None:
+                on_turn(conv["name"], step.get("say", "(wait)"), turn)
         manager.close(timeout=30.0)
         services.search_mode = mode
     return {"name": conv["name"], "file": conv["file"], "ok": not problems, "problems": problems,
@@ -185,48 +176,50 @@ def run_conversation(conv: dict, services, timeout: float = 180.0, verbose: bool
             "reply_seconds": latencies}
 
 
-def run(args: argparse.Namespace) -> int:
+def evaluate_dialogue(corpus=None, *, perception: str = "oracle", search: str = "sensed",
+                      timeout: float = 180.0, only: str | None = None,
+                      on_turn: TurnHook | None = None, progress: Progress = no_progress) -> dict:
+    """Play every conversation of ``corpus`` (files or folders; default the repository's) whose
+    name contains ``only``, with fetches in the simulator (``perception``) and unseen objects
+    found by ``search``; a fetch longer than ``timeout`` seconds counts as a hang. Returns the
+    JSON report: the summary figures (per topic, failures) and every conversation's record."""
     import statistics
 
-    from assistant.cli.common import emit_json, print_table
     from assistant.dialogue.services import Services
     from assistant.world import load_world
 
-    conversations = load_conversations(args.corpus)
-    if args.only:
-        conversations = [c for c in conversations if args.only in c["name"]]
-    services = Services(perception=args.perception, search=args.search)
+    conversations = load_conversations(corpus)
+    if only:
+        conversations = [c for c in conversations if only in c["name"]]
+    services = Services(perception=perception, search=search)
     start = time.perf_counter()
+    progress("loading the parser, describer and policies")
     services.warm_up(load_world(conversations[0].get("world", "apartment")) if conversations else None,
                      background=False)
-    records = [run_conversation(c, services, args.timeout, args.verbose) for c in conversations]
+    records = []
+    for number, conv in enumerate(conversations):
+        progress("conversations", number, len(conversations))
+        records.append(run_conversation(conv, services, timeout, on_turn))
     n = len(records)
     ok = sum(r["ok"] for r in records)
     latencies = [s for r in records for s in r["reply_seconds"]]
+    summary = {
+        "conversations": n, "as_expected": ok, "share_as_expected": round(ok / n, 4) if n else None,
+        "crashed": sum(r["crashed"] for r in records), "hung": sum(r["hung"] for r in records),
+        "median_reply_ms": round(1000 * statistics.median(latencies), 2) if latencies else None,
+        "perception": perception, "wall_seconds": round(time.perf_counter() - start, 1),
+        "by_topic": by_topic(records),
+        "failures": [{"name": r["name"], "file": r["file"], "problems": r["problems"]} for r in records if not r["ok"]],
+    }
+    return summary | {"records": records}
+
+
+def by_topic(records: list[dict]) -> dict:
+    """topic → conversations covering it and how many of them ended as expected."""
     covers: dict[str, list[int]] = {}
     for r in records:
         for c in r["covers"]:
             covers.setdefault(c, [0, 0])
             covers[c][0] += 1
             covers[c][1] += r["ok"]
-    summary = {
-        "conversations": n, "as_expected": ok, "share_as_expected": round(ok / n, 4) if n else None,
-        "crashed": sum(r["crashed"] for r in records), "hung": sum(r["hung"] for r in records),
-        "median_reply_ms": round(1000 * statistics.median(latencies), 2) if latencies else None,
-        "perception": args.perception, "wall_seconds": round(time.perf_counter() - start, 1),
-        "by_topic": {k: {"conversations": v[0], "as_expected": v[1]} for k, v in sorted(covers.items())},
-        "failures": [{"name": r["name"], "file": r["file"], "problems": r["problems"]} for r in records if not r["ok"]],
-    }
-    if args.json:
-        emit_json(summary | {"records": records})
-        return 0
-    print_table([[k, v["conversations"], v["as_expected"]] for k, v in summary["by_topic"].items()],
-                ["topic", "conversations", "as expected"])
-    print(f"\n{ok}/{n} conversations ended as expected ({100 * ok / max(n, 1):.1f}%); "
-          f"crashed {summary['crashed']}, hung {summary['hung']}; median reply {summary['median_reply_ms']} ms "
-          f"(every 'say' turn, models loaded); {summary['wall_seconds']} s")
-    for f in summary["failures"]:
-        print(f"  FAILED {f['name']} ({f['file']}):")
-        for p in f["problems"]:
-            print(f"    {p}")
-    return 0
+    return {k: {"conversations": v[0], "as_expected": v[1]} for k, v in sorted(covers.items())}

@@ -12,28 +12,17 @@ timeout) for each perception mode.
 
 from __future__ import annotations
 
-import argparse
 import json
+from collections.abc import Callable
 from pathlib import Path
+
+from assistant.eval.progress import Progress, no_progress
 
 DEFAULT_DEV_SET = Path(__file__).resolve().parents[2] / "corpus" / "fetch_dev.jsonl"
 #: Table 5-4 order of the outcome columns
 OUTCOMES = ("success", "not_visible", "parse", "reference_not_found", "collision", "ambiguous",
             "no_path", "no_room", "timeout")
 REQUIRED = ("text", "world", "scene", "object", "kind")
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--perception", choices=("sensed", "oracle", "both"), default="both",
-                        help="perception mode(s) to run (default: both)")
-    parser.add_argument("--limit", type=int, default=None, metavar="N", help="only the first N commands")
-    parser.add_argument("--world", metavar="NAME", help="only the commands of this home")
-    parser.add_argument("--scene", choices=("original", "modified"), help="only this scene")
-    parser.add_argument("--dev-set", metavar="FILE", default=None,
-                        help=f"JSON lines {{{', '.join(REQUIRED)}}} (default: {DEFAULT_DEV_SET.name} in corpus/)")
-    parser.add_argument("--grounder", choices=("scored", "learned"), default=None)
-    parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--trials", metavar="FILE", help="also write every trial's JSON line to FILE")
 
 
 def load_dev_set(path: str | Path | None = None) -> list[dict]:
@@ -78,50 +67,46 @@ def summarise(trials: list[dict]) -> dict:
             "totals": totals}
 
 
-def run(args: argparse.Namespace) -> int:
+def select(records: list[dict], world: str | None = None, scene: str | None = None,
+           limit: int | None = None) -> list[dict]:
+    """The dev-set records of one home and/or scene, the first ``limit`` of them."""
+    if world:
+        records = [r for r in records if r["world"] == world]
+    if scene:
+        records = [r for r in records if r["scene"] == scene]
+    if limit is not None:
+        records = records[: max(0, limit)]
+    return records
+
+
+def evaluate_fetch(dev_set=None, *, perception: str = "both", world: str | None = None,
+                   scene: str | None = None, limit: int | None = None, grounder: str | None = None,
+                   seed: int = 0, on_trial: Callable[[dict], None] | None = None,
+                   progress: Progress = no_progress) -> dict:
+    """Table 5-4: every selected dev-set command (:func:`load_dev_set`, :func:`select`) fetched
+    in the simulator with ``perception`` ``sensed``, ``oracle`` or ``both``. ``on_trial`` gets
+    each trial's record as it ends. Returns :func:`summarise`'s counts with the median wall-clock
+    per fetch, the number of commands and the success threshold."""
     import statistics
 
-    from assistant.cli.common import emit_json, print_table
     from assistant.executor.trial import MAX_DISTANCE_M, MIN_PIXELS, FetchRunner
 
-    records = load_dev_set(args.dev_set)
-    if args.world:
-        records = [r for r in records if r["world"] == args.world]
-    if args.scene:
-        records = [r for r in records if r["scene"] == args.scene]
-    if args.limit is not None:
-        records = records[: max(0, args.limit)]
-    modes = ("sensed", "oracle") if args.perception == "both" else (args.perception,)
-    runner = FetchRunner(grounder=args.grounder)
+    records = select(load_dev_set(dev_set), world, scene, limit)
+    modes = ("sensed", "oracle") if perception == "both" else (perception,)
+    runner = FetchRunner(grounder=grounder)
     trials = []
-    sink = open(args.trials, "w", encoding="utf-8") if args.trials else None
-    try:
-        for mode in modes:
-            for record in records:
-                outcome = runner.run(record["text"], record["world"], record["scene"], mode, args.seed,
-                                     record["object"])
-                data = {**outcome.data, "kind": record["kind"]}
-                trials.append(data)
-                if sink is not None:
-                    sink.write(json.dumps(data) + "\n")
-                    sink.flush()
-    finally:
-        if sink is not None:
-            sink.close()
+    for mode in modes:
+        for number, record in enumerate(records):
+            progress(f"{mode} fetch trials", number, len(records))
+            outcome = runner.run(record["text"], record["world"], record["scene"], mode, seed,
+                                 record["object"])
+            data = {**outcome.data, "kind": record["kind"]}
+            trials.append(data)
+            if on_trial is not None:
+                on_trial(data)
     summary = summarise(trials)
     walls = [t["wall_seconds"] for t in trials]
     summary["median_wall_seconds"] = round(statistics.median(walls), 3) if walls else None
     summary["commands"] = len(records)
     summary["threshold"] = {"min_pixels": MIN_PIXELS, "max_distance_m": MAX_DISTANCE_M}
-    if args.json:
-        emit_json(summary)
-        return 0
-    header = ["perception", "world", "scene", *OUTCOMES, "all", "rate"]
-    rows = [[g["perception"], g["world"], g["scene"], *(g[o] for o in OUTCOMES), g["all"],
-             f"{100 * g['success_rate']:.1f}%"] for g in summary["groups"]]
-    for mode, row in summary["totals"].items():
-        rows.append([mode, "ALL", "both", *(row[o] for o in OUTCOMES), row["all"], f"{100 * row['success_rate']:.1f}%"])
-    print_table(rows, header)
-    print(f"success: target object ≥ {MIN_PIXELS} pixels of the final depth frame within {MAX_DISTANCE_M} m; "
-          f"median wall-clock per fetch {summary['median_wall_seconds']} s")
-    return 0
+    return summary

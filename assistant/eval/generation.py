@@ -1,7 +1,7 @@
 """``assistant eval generation``: Table 6-1 of the dissertation, reproduced on this product.
 
 The 24 objects of the four study homes in both scenes (48 descriptions). For each, the simulated
-robot first *searches* the home from the world's start pose (:mod:`assistant.generation.search`:
+robot first *searches* the home from the world's start pose (:mod:`assistant.executor.search`:
 room by room, furniture perceived from depth, the object seen by the simulator's object
 detector), and the description is composed from the environment model that search built
 (``--search oracle``: the world file's object position and furniture instead). Search success
@@ -35,7 +35,9 @@ from __future__ import annotations
 import math
 import statistics
 import time
+from dataclasses import dataclass
 
+from assistant.eval.progress import Progress, no_progress
 from assistant.world import load_catalogue
 
 STUDY_WORLDS = ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house")
@@ -43,39 +45,6 @@ SCENES = ("original", "modified")
 MIN_DIRECTION = 0.4
 WALL_MAX_M = 0.6
 DOOR_MAX_M = 1.0
-
-
-def add_arguments(parser) -> None:
-    from assistant.cli.common import miss_probability
-    from assistant.generation.types import SEARCH_MODES
-
-    parser.add_argument("--worlds", nargs="+", default=list(STUDY_WORLDS), metavar="WORLD",
-                        help="worlds to describe (default: the four study homes)")
-    parser.add_argument("--corpus", action="append", metavar="PATH",
-                        help="annotated corpus to learn from (default: the repository's corpus/)")
-    parser.add_argument("--search", choices=SEARCH_MODES, default="sensed",
-                        help="sensed (default): the simulated robot searches and the description "
-                             "uses its perceived furniture; oracle: the world file")
-    parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",
-                        help="object detector miss rate during the search (default 0)")
-    parser.add_argument("--save-searches", metavar="FILE",
-                        help="write the finished searches to FILE (pickle) to re-score later")
-    parser.add_argument("--searches", metavar="FILE",
-                        help="re-use searches written by --save-searches instead of searching again "
-                             "(the descriptions and the listener test are run anew)")
-    parser.add_argument("--listener", action="store_true", default=True,
-                        help="hand each description to the simulated robot as a fetch command "
-                             "(the default; a few seconds per description)")
-    parser.add_argument("--no-listener", dest="listener", action="store_false",
-                        help="skip the listener test")
-    parser.add_argument("--listener-perception", choices=("sensed", "oracle"), default="sensed",
-                        help="the listener robot's furniture perception (default sensed)")
-    parser.add_argument("--policy-probabilities", action="store_true",
-                        help="furniture relations' P also from the learned policy models (geometric "
-                             "mean with the spatial relations'); default: spatial relations alone")
-    parser.add_argument("--no-parse", action="store_true",
-                        help="check the generator's own selected nodes instead of parsing the "
-                             "sentence back (faster; does not test the wording)")
 
 
 # ------------------------------------------------------------------------------ ground truth
@@ -143,11 +112,11 @@ def _holds_for(rdts, item, entities, room, floorplan, heading) -> bool:
 # ------------------------------------------------------------------------------ corpus agreement
 def _human_descriptions(corpus_paths=None) -> dict:
     """(world, object) → list of (tokens, set of reference-direction) of static descriptions."""
-    from assistant.generation.model import _corpus_files
+    from assistant.generation.model import corpus_files
     from assistant.grounding import read_chunk_groundings
     from assistant.language import read_corpus
 
-    xmls, csvs = _corpus_files(corpus_paths)
+    xmls, csvs = corpus_files(corpus_paths)
     out: dict = {}
     for i, x in enumerate(xmls):
         descs = read_corpus(x).descriptions
@@ -176,17 +145,23 @@ def _bleu2(words: list[str], references: list[list[str]]) -> float | None:
 
 
 # ------------------------------------------------------------------------------ run
-def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=None,
-             listener: bool = False, search: str = "oracle", miss_rate: float = 0.0,
-             listener_perception: str = "sensed", searches: dict | None = None,
-             policies: bool = False) -> dict:
-    """Search (``sensed``) or read (``oracle``) each object, compose and score the
-    descriptions; returns ``{"rows": [...], "summary": {...}}``. ``searches`` (``(world,
-    scene, object) → SearchResult``) reuses finished searches instead of searching again."""
-    from assistant.errors import AssistantError
-    from assistant.generation import Describer, load_generation_model, oracle_cases, repeated_phrases
-    from assistant.generation.content import entry_heading, support_of
-    from assistant.grounding.types import RDT
+@dataclass
+class _Tools:
+    """What every case of one evaluation uses: the describer, the parser (``None``: check the
+    generator's own nodes), the corpus's human descriptions, the listener's fetch runner and
+    the furniture detector of the searches (``None`` when not needed)."""
+
+    describer: object
+    parser: object
+    parser_note: str | None
+    humans: dict
+    runner: object
+    listener_note: str
+    furniture_detector: object
+
+
+def _tools(corpus_paths, parse: bool, listener: bool, search: str, policies: bool) -> _Tools:
+    from assistant.generation import Describer, load_generation_model
 
     describer = Describer(load_generation_model(corpus_paths), policies="default" if policies else None)
     parser = None
@@ -212,130 +187,201 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
                 else FetchRunner(detector=furniture_detector)
         except ImportError as error:
             listener_note = f"not measured: assistant fetch is not available ({error})"
+    return _Tools(describer, parser, parser_note, humans, runner, listener_note, furniture_detector)
+
+
+def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
+             progress: Progress = no_progress, listener: bool = False, search: str = "oracle",
+             miss_rate: float = 0.0, listener_perception: str = "sensed",
+             searches: dict | None = None, policies: bool = False) -> dict:
+    """Search (``sensed``) or read (``oracle``) each object, compose and score the
+    descriptions; returns ``{"rows": [...], "summary": {...}, "searches": {...}}``.
+    ``searches`` (``(world, scene, object) → SearchResult``) reuses finished searches instead of
+    searching again; the returned ``searches`` are this run's. ``progress`` hears one line per
+    description."""
+    from assistant.generation import oracle_cases
+
+    tools = _tools(corpus_paths, parse, listener, search, policies)
     rows = []
     done: dict = {}
     t_start = time.perf_counter()
-    for wname, world, scene, obj, env, sighting in oracle_cases(worlds, SCENES):
-        # ground truth (evaluation only): the object's true support and the true furniture
-        support = support_of(sighting, env)
-        room = world.floorplan.room(support.room)
-        # the person asking stands where the robot was asked, the world's start pose: walls are
-        # named ("the back wall") as they walk into the room from there
-        listener_pose = world.start
-        heading = entry_heading(world.floorplan, room.name, listener_pose)
-        search_row = None
+    for case in oracle_cases(worlds, SCENES):
+        found = None
         if search == "sensed":
-            from assistant.generation.search import search_for
-
-            found = (searches or {}).get((wname, scene, obj.name))
+            found = (searches or {}).get((case.world_name, case.scene, case.obj.name))
             if found is None:
-                found = search_for(obj.name, world, scene, furniture_detector=furniture_detector,
-                                   miss_rate=miss_rate)
-            done[(wname, scene, obj.name)] = found
-            t0 = time.perf_counter()
-            result = describer.describe_search(found, world.floorplan, listener_pose=listener_pose)
-            compose_ms = (time.perf_counter() - t0) * 1000
-            error_m = (math.hypot(found.sighting.x - obj.x, found.sighting.y - obj.y)
-                       if found.found else None)
-            right_place = bool(found.found and found.sighting.room == room.name and error_m <= 0.3)
-            search_row = {"found": found.found, "right_place": right_place,
-                          "position_error_m": None if error_m is None else round(error_m, 3),
-                          "room_seen": found.sighting.room if found.found else None,
-                          "support_perceived": found.placed.furniture_category if found.placed else None,
-                          "rooms_searched": found.rooms_searched, "path_m": round(found.path_m, 2),
-                          "sim_seconds": round(found.sim_seconds, 1),
-                          "wall_seconds": round(found.wall_seconds, 2),
-                          "furniture_perceived": len(found.furniture), "status": found.status}
-        else:
-            t0 = time.perf_counter()
-            result = describer.describe(sighting, env, world.floorplan, listener_pose=listener_pose)
-            compose_ms = (time.perf_counter() - t0) * 1000
-        text = result.description
-        meant = {n.rdt for n in result.selected if n.kind == "relation"}
-        if not result.found:
-            rdts, problems, checks = [], ["not found by the search"], []
-            stated_room = stated_object = stated_support = None
-        elif parser is not None:
-            plan = parser.parse(text).plan
-            stated_room = plan.room
-            stated_object = plan.object
-            stated_support = plan.nodes[-1].target if plan.nodes else None
-            rdts = [r for node in plan.nodes for r in node.rdts]
-            rdts = [r for r in rdts if not (str(r) == f"room-center-{r.target}"
-                                            and f"room-center-{r.target}" not in meant)]
-        else:
-            stated_room = next((n.words["room"] for n in result.selected if n.kind == "room"), None)
-            stated_object = obj.name
-            stated_support = next((n.words.get("support") for n in result.selected if n.kind == "support"),
-                                  None)
-            if stated_support in _size_words():  # "end table" is a table
-                stated_support = "table"
-            rdts = [RDT.parse(r) for r in sorted(meant)]
-        said_room = any(n.kind == "room" for n in result.selected)
-        if result.found:
-            problems, checks = [], []
-            if stated_object != obj.name:
-                problems.append(f"object read as {stated_object!r}")
-            if said_room and stated_room != room.name:
-                problems.append(f"room read as {stated_room!r}, is {room.name!r}")
-            if result.tree is not None and stated_support != support.name:
-                problems.append(f"support read as {stated_support!r}, is {support.name!r}")
-            size = _support_size_problem(text, support)
-            if size:
-                problems.append(size)
-            for r in rdts:
-                ok, why = _check_rdt(r, support, env, room, world.floorplan, heading)
-                checks.append({"rdt": str(r), "true": ok, "why": why})
-                if not ok:
-                    problems.append(f"{r}: {why}")
-        same = [e for e in env if e is not support and e.name == support.name
-                and (not said_room or e.room == room.name)]
-        unique = bool(result.found) and not any(
-            _holds_for(rdts, e, env, world.floorplan.room(e.room), world.floorplan,
-                       entry_heading(world.floorplan, e.room, listener_pose)) and not _size_rules_out(text, e)
-            for e in same)
-        recovered = meant <= {str(r) for r in rdts}
-        words = [w.strip(",.").lower() for w in text.split()]
-        refs = humans.get((wname, obj.name), [])
-        ours = {f"{r.reference}-{r.direction}" for r in rdts}
-        people = set().union(*[p for _, p in refs]) if refs else set()
-        fetched = None
-        if runner is not None and result.found:
-            try:
-                outcome = runner.run(text, wname, scene, listener_perception, object_name=obj.name)
-                fetched = {"success": outcome.success, "failure": outcome.data.get("failure"),
-                           "message": outcome.data["executor"]["message"],
-                           "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),
-                           "nodes": [n.get("rdt") for n in outcome.data.get("nodes", [])]}
-            except (AssistantError, RuntimeError, ValueError, KeyError) as error:
-                fetched = {"success": False, "failure": f"error: {error}"}
-        elif runner is not None:
-            fetched = {"success": False, "failure": "not found by the search"}
-        rows.append({
-            "listener": fetched, "search": search_row,
-            "world": wname, "scene": scene, "object": obj.name, "description": text,
-            "support_id": support.id, "support_at": [round(float(v), 2) for v in support.centroid_m],
-            "nodes": result.nodes, "stated": [str(r) for r in rdts],
-            "true": result.found and not problems, "problems": problems, "checks": checks,
-            "unique": unique, "flagged_ambiguous": result.ambiguous, "recovered": recovered,
-            "words": len(words), "repeated": repeated_phrases(text),
-            "bleu2": _bleu2(words, [w for w, _ in refs]),
-            "human_relation_agreement": (len(ours & people) / len(ours)) if ours and refs else None,
-            "human_descriptions": len(refs),
-            "compose_ms": compose_ms,
-        })
-        if log:
-            extra = ""
-            if search_row:
-                extra += f" [search {'found' if search_row['found'] else 'NOT found'} in {search_row['wall_seconds']} s]"
-            if fetched is not None:
-                extra += f" [listener {'ok' if fetched['success'] else fetched['failure']}]"
-            log(f"{wname} {scene} {obj.name}: {text}{extra}")
+                from assistant.executor.search import search_for
+
+                found = search_for(case.obj.name, case.world, case.scene,
+                                   furniture_detector=tools.furniture_detector, miss_rate=miss_rate)
+            done[(case.world_name, case.scene, case.obj.name)] = found
+        row = score_case(case, found, tools, listener_perception)
+        rows.append(row)
+        progress(_case_line(row), len(rows))
+    summary = summarise(rows, tools, search, listener_perception)
+    summary["wall_seconds"] = round(time.perf_counter() - t_start, 1)
+    summary["targets"] = {"true_and_no_repeat": len(rows), "median_words_max": 16,
+                          "listener_min": math.ceil(0.95 * len(rows))}
+    return {"rows": rows, "summary": summary, "searches": done}
+
+
+def _case_line(row: dict) -> str:
+    extra = ""
+    if row["search"]:
+        extra += f" [search {'found' if row['search']['found'] else 'NOT found'} in {row['search']['wall_seconds']} s]"
+    if row["listener"] is not None:
+        extra += f" [listener {'ok' if row['listener']['success'] else row['listener']['failure']}]"
+    return f"{row['world']} {row['scene']} {row['object']}: {row['description']}{extra}"
+
+
+def _search_row(found, obj, room) -> dict:
+    """How the robot's search for ``obj`` went, against the ground truth."""
+    error_m = (math.hypot(found.sighting.x_m - obj.x, found.sighting.y_m - obj.y)
+               if found.found else None)
+    right_place = bool(found.found and found.sighting.room == room.name and error_m <= 0.3)
+    return {"found": found.found, "right_place": right_place,
+            "position_error_m": None if error_m is None else round(error_m, 3),
+            "room_seen": found.sighting.room if found.found else None,
+            "support_perceived": found.sighting.furniture_category if found.sighting else None,
+            "rooms_searched": found.rooms_searched, "path_m": round(found.path_m, 2),
+            "sim_seconds": round(found.sim_seconds, 1),
+            "wall_seconds": round(found.wall_seconds, 2),
+            "furniture_perceived": len(found.furniture), "status": found.status}
+
+
+def _stated(result, parser, obj, meant) -> tuple:
+    """(room, object, support, RDTs) the description states: parsed back from its text, or the
+    generator's own nodes without a parser."""
+    from assistant.grounding.types import RDT
+
+    if parser is not None:
+        plan = parser.parse(result.description).plan
+        rdts = [r for node in plan.nodes for r in node.rdts]
+        rdts = [r for r in rdts if not (str(r) == f"room-center-{r.target}"
+                                        and f"room-center-{r.target}" not in meant)]
+        return plan.room, plan.object, (plan.nodes[-1].target if plan.nodes else None), rdts
+    room = next((n.words["room"] for n in result.selected if n.kind == "room"), None)
+    support = next((n.words.get("support") for n in result.selected if n.kind == "support"), None)
+    if support in _size_words():  # "end table" is a table
+        support = "table"
+    return room, obj.name, support, [RDT.parse(r) for r in sorted(meant)]
+
+
+def _truth(result, stated, case, support, room, heading, said_room) -> tuple[list, list]:
+    """(problems, checks): each stated fact against the ground truth."""
+    stated_room, stated_object, stated_support, rdts = stated
+    problems, checks = [], []
+    if stated_object != case.obj.name:
+        problems.append(f"object read as {stated_object!r}")
+    if said_room and stated_room != room.name:
+        problems.append(f"room read as {stated_room!r}, is {room.name!r}")
+    if result.tree is not None and stated_support != support.name:
+        problems.append(f"support read as {stated_support!r}, is {support.name!r}")
+    size = _support_size_problem(result.description, support)
+    if size:
+        problems.append(size)
+    for r in rdts:
+        ok, why = _check_rdt(r, support, case.environment, room, case.world.floorplan, heading)
+        checks.append({"rdt": str(r), "true": ok, "why": why})
+        if not ok:
+            problems.append(f"{r}: {why}")
+    return problems, checks
+
+
+def _singles_out(result, rdts, case, support, room, said_room, listener_pose) -> bool:
+    """Whether the stated room and relations hold for no other furniture with the support's word."""
+    from assistant.generation.entry import entry_heading
+
+    env, floorplan, text = case.environment, case.world.floorplan, result.description
+    same = [e for e in env if e is not support and e.name == support.name
+            and (not said_room or e.room == room.name)]
+    return bool(result.found) and not any(
+        _holds_for(rdts, e, env, floorplan.room(e.room), floorplan,
+                   entry_heading(floorplan, e.room, listener_pose)) and not _size_rules_out(text, e)
+        for e in same)
+
+
+def _listen(runner, result, case, listener_perception: str) -> dict | None:
+    """(b): the description handed to the simulated robot as a fetch command."""
+    from assistant.errors import AssistantError
+
+    if runner is None:
+        return None
+    if not result.found:
+        return {"success": False, "failure": "not found by the search"}
+    try:
+        outcome = runner.run(result.description, case.world_name, case.scene, listener_perception,
+                             object_name=case.obj.name)
+        return {"success": outcome.success, "failure": outcome.data.get("failure"),
+                "message": outcome.data["executor"]["message"],
+                "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),
+                "nodes": [n.get("rdt") for n in outcome.data.get("nodes", [])]}
+    except (AssistantError, RuntimeError, ValueError, KeyError) as error:
+        return {"success": False, "failure": f"error: {error}"}
+
+
+def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") -> dict:
+    """One row of Table 6-1: ``case`` (an :class:`~assistant.generation.describer.OracleCase`)
+    described from the finished search ``found`` (``None``: from the world file), its truth,
+    uniqueness, listener fetch, brevity and agreement with people."""
+    from assistant.generation import repeated_phrases
+    from assistant.generation.content import support_of
+    from assistant.generation.entry import entry_heading
+
+    # ground truth (evaluation only): the object's true support and the true furniture
+    support = support_of(case.sighting, case.environment)
+    floorplan = case.world.floorplan
+    room = floorplan.room(support.room)
+    # the person asking stands where the robot was asked, the world's start pose: walls are
+    # named ("the back wall") as they walk into the room from there
+    listener_pose = case.world.start
+    heading = entry_heading(floorplan, room.name, listener_pose)
+    t0 = time.perf_counter()
+    if found is not None:
+        result = tools.describer.describe_search(found, floorplan, listener_pose=listener_pose)
+    else:
+        result = tools.describer.describe(case.sighting, case.environment, floorplan,
+                                          listener_pose=listener_pose)
+    compose_ms = (time.perf_counter() - t0) * 1000
+    text = result.description
+    meant = {n.rdt for n in result.selected if n.kind == "relation"}
+    said_room = any(n.kind == "room" for n in result.selected)
+    if result.found:
+        stated = _stated(result, tools.parser, case.obj, meant)
+        problems, checks = _truth(result, stated, case, support, room, heading, said_room)
+    else:
+        stated = (None, None, None, [])
+        problems, checks = ["not found by the search"], []
+    rdts = stated[3]
+    words = [w.strip(",.").lower() for w in text.split()]
+    refs = tools.humans.get((case.world_name, case.obj.name), [])
+    ours = {f"{r.reference}-{r.direction}" for r in rdts}
+    people = set().union(*[p for _, p in refs]) if refs else set()
+    return {
+        "listener": _listen(tools.runner, result, case, listener_perception),
+        "search": None if found is None else _search_row(found, case.obj, room),
+        "world": case.world_name, "scene": case.scene, "object": case.obj.name, "description": text,
+        "support_id": support.id, "support_at": [round(float(v), 2) for v in support.centroid_m],
+        "nodes": result.nodes, "stated": [str(r) for r in rdts],
+        "true": result.found and not problems, "problems": problems, "checks": checks,
+        "unique": _singles_out(result, rdts, case, support, room, said_room, listener_pose),
+        "flagged_ambiguous": result.ambiguous, "recovered": meant <= {str(r) for r in rdts},
+        "words": len(words), "repeated": repeated_phrases(text),
+        "bleu2": _bleu2(words, [w for w, _ in refs]),
+        "human_relation_agreement": (len(ours & people) / len(ours)) if ours and refs else None,
+        "human_descriptions": len(refs),
+        "compose_ms": compose_ms,
+    }
+
+
+def summarise(rows: list[dict], tools: _Tools, search: str, listener_perception: str) -> dict:
+    """The summary figures of Table 6-1's rows (without the run's time and the targets)."""
     n = len(rows)
     bleus = [r["bleu2"] for r in rows if r["bleu2"] is not None]
     agree = [r["human_relation_agreement"] for r in rows if r["human_relation_agreement"] is not None]
     searched = [r["search"] for r in rows if r["search"]]
-    summary = {
+    listened = sum(bool(r["listener"] and r["listener"]["success"]) for r in rows)
+    return {
         "descriptions": n,
         "search": search,
         "search_found": sum(s["found"] for s in searched) if searched else None,
@@ -348,24 +394,19 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True, log=Non
         "true_and_no_repeat": sum(r["true"] and not r["repeated"] for r in rows),
         "unique": sum(r["unique"] for r in rows),
         "flagged_ambiguous": sum(r["flagged_ambiguous"] for r in rows),
-        "recovered_by_parse": sum(r["recovered"] for r in rows) if parser is not None else None,
+        "recovered_by_parse": sum(r["recovered"] for r in rows) if tools.parser is not None else None,
         "median_words": statistics.median(r["words"] for r in rows) if rows else None,
         "max_words": max((r["words"] for r in rows), default=None),
         "median_bleu2": statistics.median(bleus) if bleus else None,
         "mean_human_relation_agreement": statistics.fmean(agree) if agree else None,
         "median_compose_ms": statistics.median(r["compose_ms"] for r in rows) if rows else None,
-        "truth_checked_by": "parse" if parser is not None else "generator nodes",
-        "parser_note": parser_note,
-        "listener_success": (sum(bool(r["listener"] and r["listener"]["success"]) for r in rows)
-                             if runner is not None else None),
-        "listener": (f"{sum(bool(r['listener'] and r['listener']['success']) for r in rows)}/{n} "
-                     "descriptions followed by the simulated robot (assistant fetch from the start "
-                     f"pose, {listener_perception} perception) to a view of the object"
-                     if runner is not None else listener_note),
-        "wall_seconds": round(time.perf_counter() - t_start, 1),
-        "targets": {"true_and_no_repeat": n, "median_words_max": 16, "listener_min": math.ceil(0.95 * n)},
+        "truth_checked_by": "parse" if tools.parser is not None else "generator nodes",
+        "parser_note": tools.parser_note,
+        "listener_success": listened if tools.runner is not None else None,
+        "listener": (f"{listened}/{n} descriptions followed by the simulated robot (assistant fetch "
+                     f"from the start pose, {listener_perception} perception) to a view of the object"
+                     if tools.runner is not None else tools.listener_note),
     }
-    return {"rows": rows, "summary": summary, "searches": done}
 
 
 def _size_words() -> dict[str, str]:
@@ -395,97 +436,3 @@ def _support_size_problem(text: str, support) -> str | None:
 def _size_rules_out(text: str, item) -> bool:
     word = _said_support_word(text)
     return word is not None and item.category != _size_words()[word]
-
-
-def run(args) -> int:
-    import sys
-
-    from assistant.cli.common import emit_json, print_table
-
-    searches = None
-    if args.searches:
-        import pickle
-
-        from assistant.errors import DataFileError
-
-        try:
-            with open(args.searches, "rb") as fh:
-                searches = pickle.load(fh)
-        except (OSError, pickle.UnpicklingError, EOFError, AttributeError) as error:
-            raise DataFileError(args.searches, "searches", f"cannot be read ({error}); write it with "
-                                "--save-searches") from error
-    report = evaluate(args.worlds, args.corpus, parse=not args.no_parse,
-                      log=None if args.json else (lambda m: print(m, file=sys.stderr, flush=True)),
-                      listener=args.listener, search=args.search, miss_rate=args.miss_rate,
-                      listener_perception=args.listener_perception, searches=searches,
-                      policies=args.policy_probabilities)
-    if args.save_searches:
-        import pickle
-
-        from assistant.fileio import atomic_write_bytes
-
-        atomic_write_bytes(args.save_searches, pickle.dumps(report.pop("searches")))
-    else:
-        report.pop("searches", None)
-    if args.json:
-        emit_json(report)
-        return 0
-    rows = report["rows"]
-    s = report["summary"]
-    print(f"Table 6-1 (reproduced): generated descriptions of the study objects, {s['search']} search\n")
-
-    def lis(r):
-        if r["listener"] is None:
-            return "-"
-        return "yes" if r["listener"]["success"] else r["listener"]["failure"]
-
-    def found(r):
-        if r["search"] is None:
-            return "oracle"
-        return ("yes" if r["search"]["right_place"] else "wrong") if r["search"]["found"] else "NO"
-
-    print_table([(i + 1, r["world"], r["scene"][:4], r["object"], found(r), r["description"], r["words"],
-                  "yes" if r["true"] else "NO", "yes" if r["unique"] else "no",
-                  ", ".join(r["repeated"]) or "-", lis(r),
-                  "-" if r["bleu2"] is None else f"{r['bleu2']:.2f}",
-                  "-" if r["human_relation_agreement"] is None else f"{r['human_relation_agreement']:.2f}")
-                 for i, r in enumerate(rows)],
-                ["#", "world", "scene", "object", "found", "description", "words", "true", "unique",
-                 "repeated", "listener", "BLEU-2", "agree"])
-    bad = [r for r in rows if not r["true"]]
-    if bad:
-        print("\nfalse relations:")
-        for r in bad:
-            print(f"  {r['world']} {r['scene']} {r['object']}: {'; '.join(r['problems'])}")
-    missed = [r for r in rows if r["listener"] and not r["listener"]["success"]]
-    if missed:
-        print("\nlistener failures:")
-        for r in missed:
-            li = r["listener"]
-            print(f"  {r['world']} {r['scene']} {r['object']} (on {r['support_id']} at {r['support_at']}): "
-                  f"{li['failure']} — {li.get('message', '')}; went to {li.get('target')}")
-    print()
-    if s["search_found"] is not None:
-        print(f"search: found {s['search_found']}/{s['descriptions']} (at the right place "
-              f"{s['search_right_place']}/{s['descriptions']}); median {s['median_search_wall_seconds']:.1f} s "
-              f"computer time, {s['median_search_sim_seconds']:.0f} s robot time, "
-              f"{s['median_search_path_m']:.1f} m driven")
-    print(f"every stated relation true: {s['all_relations_true']}/{s['descriptions']} "
-          f"(checked by {s['truth_checked_by']}); no repeated phrase: "
-          f"{s['no_repeated_phrase']}/{s['descriptions']}; both: {s['true_and_no_repeat']}/"
-          f"{s['descriptions']} (target {s['descriptions']}/{s['descriptions']}; dissertation 43/48)")
-    recovered = ("not parsed" if s["recovered_by_parse"] is None
-                 else f"{s['recovered_by_parse']}/{s['descriptions']}")
-    print(f"support singled out: {s['unique']}/{s['descriptions']} (the generator found no "
-          f"true wording that does for {s['flagged_ambiguous']}); meant relations recovered by "
-          f"the parse: {recovered}")
-    print(f"median length {s['median_words']} words (target <= 16), longest {s['max_words']}")
-    if s["median_bleu2"] is not None:
-        print(f"agreement with the corpus's human descriptions: median BLEU-2 {s['median_bleu2']:.3f}, "
-              f"mean share of stated relations people also used {s['mean_human_relation_agreement']:.2f}")
-    print(f"median composition {s['median_compose_ms']:.1f} ms")
-    print(f"listener: {s['listener']} (target >= {s['targets']['listener_min']})")
-    print(f"evaluation took {s['wall_seconds']:.0f} s")
-    if s["parser_note"]:
-        print(s["parser_note"])
-    return 0

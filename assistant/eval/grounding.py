@@ -11,10 +11,10 @@ is the fraction of commands with every chunk right in every field.
 
 from __future__ import annotations
 
-import argparse
 import random
-import sys
 from pathlib import Path
+
+from assistant.eval.progress import Progress, no_progress
 
 FIELD_ROWS = (("target room", "Target room"), ("target object", "Target Object"),
               ("reference", "Reference"), ("direction", "Direction"), ("target", "Target"),
@@ -29,34 +29,11 @@ CSISL_WORLD = "apartment"
 
 
 def default_test_path() -> Path | None:
-    shared = Path(__file__).resolve().parents[3] / "shared" / "realdata" / "csisl"
-    path = shared / "csisl_templates149_chunk_groundings.csv"
+    """The CSISL template chunk labels, when they are there."""
+    from assistant.eval.csisl import csisl_folder
+
+    path = csisl_folder() / "csisl_templates149_chunk_groundings.csv"
     return path if path.exists() else None
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--corpus", metavar="PATH", action="append",
-                        help="training corpus files/folders (*.csv labels, *.xml trees); default corpus/")
-    parser.add_argument("--test", metavar="PATH",
-                        help="held-out chunk-grounding CSV (default: the CSISL template labels in "
-                             "../shared/realdata/csisl when present)")
-    parser.add_argument("--test-world", metavar="NAME",
-                        help="the home the test commands were given in (default: apartment for the "
-                             "CSISL templates, whose living room is on the right and bedroom on the left)")
-    parser.add_argument("--rounds", type=int, default=10, help="bootstrap rounds for (a) (default 10)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first round")
-    parser.add_argument("--grounder", choices=GROUNDER_NAMES, action="append",
-                        help="evaluate only this grounder (repeatable; default all three)")
-    parser.add_argument("--no-plans", dest="plans", action="store_false",
-                        help="skip (c): parsing every corpus description from its text")
-    parser.add_argument("--descriptions", metavar="PATH", action="append",
-                        help="(d) annotated descriptions (corpus XML, e.g. the real CSISL file): parse each "
-                             "text and report the share whose plan names the object they name and "
-                             "leaves no spatial word unused (repeatable)")
-    parser.add_argument("--descriptions-world", metavar="NAME", default=CSISL_WORLD,
-                        help="the home the descriptions were given in (default apartment)")
-    parser.add_argument("--errors", type=int, default=0, metavar="N",
-                        help="also list up to N wrongly grounded test chunks per grounder")
 
 
 def bootstrap(name: str, commands, rounds: int, seed: int) -> dict[str, float]:
@@ -118,137 +95,115 @@ def plan_agreement(parser, descriptions, commands, limit: int = 10) -> dict:
             "disagreements": disagreements}
 
 
-def run(args: argparse.Namespace) -> int:
-    from assistant.cli.common import emit_json, print_table
+def evaluate_grounding(corpus=None, test=None, test_world: str | None = None, *, rounds: int = 10,
+                       seed: int = 0, grounders=None, plans: bool = True, errors: int = 0,
+                       descriptions=None, descriptions_world: str = CSISL_WORLD,
+                       progress: Progress = no_progress) -> dict:
+    """Experiments (a) bootstrap on the corpus, (b) the held-out ``test`` label file (default: the
+    CSISL templates when present, given in ``test_world``) and (c) every corpus description parsed
+    from its text, for each of ``grounders`` (default all three). ``errors``: list up to that many
+    wrongly grounded test chunks per grounder. ``descriptions``: annotated description files for
+    (d), each parsed in ``descriptions_world`` (:func:`description_coverage`). Returns the JSON
+    report."""
     from assistant.errors import AssistantError
-    from assistant.grounding.base import command_errors
-    from assistant.grounding.labels import read_chunk_groundings, with_world
-    from assistant.grounding.training import load_labels, make_grounder, split_corpus_paths
+    from assistant.grounding.training import load_labels, split_corpus_paths
 
-    names = args.grounder or list(GROUNDER_NAMES)
-    csvs, xmls = split_corpus_paths(args.corpus)
-    corpus = load_labels(csvs, xmls)
-    if len(corpus.commands) < 3:
-        raise AssistantError(f"need at least 3 labelled commands to split, found {len(corpus.commands)} "
+    names = list(grounders or GROUNDER_NAMES)
+    csvs, xmls = split_corpus_paths(corpus)
+    labels = load_labels(csvs, xmls)
+    if len(labels.commands) < 3:
+        raise AssistantError(f"need at least 3 labelled commands to split, found {len(labels.commands)} "
                              f"in {', '.join(map(str, csvs))}")
-    test_path = Path(args.test) if args.test else default_test_path()
-    test = read_chunk_groundings(test_path) if test_path else None
-    test_world = args.test_world
+    test_path, test_set, test_world = _test_set(test, test_world)
+
+    result: dict = {"corpus": {"files": [str(p) for p in csvs], "commands": len(labels.commands),
+                               "chunks": len(labels.records), "problems": labels.problems[:20]},
+                    "protocol": {"rounds": rounds, "train_fraction": "2/3", "seed": seed},
+                    "corpus_split": {}, "test": None, "dissertation": DISSERTATION}
+    for number, name in enumerate(names):
+        progress(f"(a) bootstrap rounds of the {name} grounder", number, len(names))
+        result["corpus_split"][name] = bootstrap(name, labels.commands, rounds, seed)
+    if plans:
+        progress("(c) parsing every corpus description from its text")
+        result["plans"] = plans_agreement(names, labels, corpus, xmls, limit=errors)
+    if descriptions:
+        progress("(d) parsing the annotated descriptions")
+        result["descriptions"] = description_coverage(names, corpus, descriptions, descriptions_world, errors)
+    if test_set is not None:
+        progress(f"(b) testing on {test_path}")
+        result["test"] = held_out_accuracy(names, labels, test_set, errors)
+        result["test"] = {"file": str(test_path), "world": test_world, **result["test"]}
+    return result
+
+
+def _test_set(test, test_world):
+    """(path, label set with its world set, world) of experiment (b); (None, None, world)
+    without a test file."""
+    from assistant.grounding.labels import read_chunk_groundings, with_world
+
+    test_path = Path(test) if test else default_test_path()
+    test_set = read_chunk_groundings(test_path) if test_path else None
     if test_world is None and test_path is not None and test_path == default_test_path():
         test_world = CSISL_WORLD
-    if test is not None and test_world:
-        test.commands = [with_world(c, test_world) for c in test.commands]
+    if test_set is not None and test_world:
+        test_set.commands = [with_world(c, test_world) for c in test_set.commands]
+    return test_path, test_set, test_world
 
-    result: dict = {"corpus": {"files": [str(p) for p in csvs], "commands": len(corpus.commands),
-                               "chunks": len(corpus.records), "problems": corpus.problems[:20]},
-                    "protocol": {"rounds": args.rounds, "train_fraction": "2/3", "seed": args.seed},
-                    "corpus_split": {}, "test": None, "dissertation": DISSERTATION}
+
+def plans_agreement(names, labels, corpus, xmls, limit: int = 0) -> dict:
+    """Experiment (c) for each grounder (trained on all of ``labels``): :func:`plan_agreement`
+    over the descriptions of the ``xmls`` corpus files."""
+    from assistant.grounding.parser import CommandParser
+    from assistant.grounding.training import make_grounder
+    from assistant.language.corpus import read_corpora
+
+    descriptions = read_corpora(xmls).descriptions if xmls else []
+    out = {}
+    language = None
     for name in names:
-        result["corpus_split"][name] = bootstrap(name, corpus.commands, args.rounds, args.seed)
-    if args.plans:
-        from assistant.grounding.parser import CommandParser
-        from assistant.language.corpus import read_corpora
+        grounder = make_grounder(name).fit(labels.records, labels.groundings)
+        if language is None:
+            language = CommandParser.load(name, corpus).language
+        out[name] = plan_agreement(CommandParser(language, grounder), descriptions,
+                                   labels.commands, limit=limit)
+    return out
 
-        descriptions = read_corpora(xmls).descriptions if xmls else []
-        result["plans"] = {}
-        language = None
-        for name in names:
-            grounder = make_grounder(name).fit(corpus.records, corpus.groundings)
-            if language is None:
-                language = CommandParser.load(name, args.corpus).language
-            result["plans"][name] = plan_agreement(CommandParser(language, grounder), descriptions,
-                                                   corpus.commands, limit=args.errors)
-    if args.descriptions:
-        result["descriptions"] = _coverage(args, names)
-    errors: dict[str, list] = {}
-    if test is not None:
-        result["test"] = {"file": str(test_path), "world": test_world, "commands": len(test.commands),
-                          "chunks": len(test.records), "problems": test.problems[:20], "accuracy": {}}
-        for name in names:
-            grounder = make_grounder(name).fit(corpus.records, corpus.groundings)
-            result["test"]["accuracy"][name] = grounder.accuracy(test.commands)
-            if args.errors:
-                errors[name] = [
-                    {"command": number, "label": rec.label, "words": " ".join(rec.words),
-                     "gold": truth.to_dict(), "guess": guess.to_dict()}
-                    for number, rec, truth, guess in command_errors(grounder, test.commands)[:args.errors]]
+
+def held_out_accuracy(names, labels, test_set, errors: int = 0) -> dict:
+    """Experiment (b): each grounder trained on all of ``labels``, its accuracies on
+    ``test_set`` and, with ``errors``, up to that many wrong chunks per grounder."""
+    from assistant.grounding.base import command_errors
+    from assistant.grounding.training import make_grounder
+
+    out: dict = {"commands": len(test_set.commands), "chunks": len(test_set.records),
+                 "problems": test_set.problems[:20], "accuracy": {}}
+    wrong: dict[str, list] = {}
+    for name in names:
+        grounder = make_grounder(name).fit(labels.records, labels.groundings)
+        out["accuracy"][name] = grounder.accuracy(test_set.commands)
         if errors:
-            result["test"]["errors"] = errors
-
-    if args.json:
-        emit_json(result)
-        return 0
-    out = sys.stdout
-    out.write(f"Training corpus: {result['corpus']['commands']} commands, {result['corpus']['chunks']} chunks "
-              f"({', '.join(result['corpus']['files'])})\n\n")
-    _table(print_table, "(a) our corpus, 2/3 train – 1/3 test, "
-           f"{args.rounds} bootstrap rounds (Table 4-3 form)", result["corpus_split"], names)
-    if result["test"] is not None:
-        t = result["test"]
-        _table(print_table, f"(b) trained on our corpus, tested on {t['file']} "
-               f"({t['commands']} commands, {t['chunks']} chunks, world {t['world'] or 'unknown'}) "
-               "(Table 4-3 form)", t["accuracy"], names)
-        out.write("Table 4-4 form — whole command accuracy (%)\n")
-        rows = [["dissertation (CSISL split)", _pct(DISSERTATION["scored"]["whole command"]),
-                 _pct(DISSERTATION["learned"]["whole command"]), "-"]]
-        rows.append(["ours, (a) corpus split", *[_pct(result["corpus_split"].get(n, {}).get("whole command")) for n in GROUNDER_NAMES]])
-        rows.append(["ours, (b) test file", *[_pct(t["accuracy"].get(n, {}).get("whole command")) for n in GROUNDER_NAMES]])
-        print_table(rows, ["", "scored (WLD) / previous approach", "learned / LSTM", "combined"])
-        for name, items in errors.items():
-            out.write(f"\nerrors of {name} on the test file:\n")
-            for e in items:
-                gold = {k: v for k, v in e["gold"].items() if v}
-                guess = {k: v for k, v in e["guess"].items() if v}
-                out.write(f"  #{e['command']} {e['label']} '{e['words']}': gold {gold} guess {guess}\n")
-    else:
-        out.write("(b) skipped: no test file (give --test PATH)\n")
-    for name, cov in (result.get("descriptions") or {}).items():
-        out.write(f"\n(d) {cov['files']}: parsed in {args.descriptions_world} with {name}: plan names the "
-                  f"object said and leaves no spatial word unused: {cov['covered']} / {cov['descriptions']} "
-                  f"= {_pct(cov['share'])} %\n    misses by why: {cov['why']}\n"
-                  f"    spatial words left unused most: {cov['unused_words']}\n")
-        for m in cov["misses"]:
-            out.write(f"  #{m['number']} '{m['text']}': object (said, plan) {m['object']} unused {m['unused']}\n")
-    if result.get("plans"):
-        out.write("\n(c) every corpus description parsed from its text (tagger + chunker + grounder, "
-                  "trained on the whole corpus): plan (room, nodes, object) equal to its annotation's (%)\n")
-        families = sorted({f for r in result["plans"].values() for f in r["families"]})
-        rows = [[f, *[_pct(result["plans"][n]["families"].get(f)) for n in names]] for f in families]
-        rows.append(["all descriptions", *[_pct(result["plans"][n]["agreement"]) for n in names]])
-        rows.append(["compared / skipped (rows ≠ tree)",
-                     *[f"{result['plans'][n]['descriptions']} / {result['plans'][n]['skipped']}" for n in names]])
-        print_table(rows, ["family", *names])
-        for name in names:
-            for d in result["plans"][name]["disagreements"]:
-                out.write(f"  {name} #{d['number']} '{d['text']}': annotation {d['gold']} parsed {d['parsed']}\n")
-    return 0
+            wrong[name] = [
+                {"command": number, "label": rec.label, "words": " ".join(rec.words),
+                 "gold": truth.to_dict(), "guess": guess.to_dict()}
+                for number, rec, truth, guess in command_errors(grounder, test_set.commands)[:errors]]
+    if wrong:
+        out["errors"] = wrong
+    return out
 
 
-def _coverage(args, names) -> dict:
-    """(d): each grounder's parser over the descriptions files (:mod:`assistant.grounding.coverage`)."""
+def description_coverage(names, corpus, paths, world_name: str, limit: int = 0) -> dict:
+    """Experiment (d): for each grounder, the share of the annotated descriptions in ``paths``
+    whose plan names the object they name and leaves no spatial word unused
+    (:func:`~assistant.grounding.coverage.plan_coverage`), parsed in the home ``world_name``."""
     from assistant.grounding.coverage import plan_coverage
     from assistant.grounding.parser import CommandParser
     from assistant.language.corpus import read_corpora
     from assistant.world import load_world
 
-    read = read_corpora(args.descriptions)
-    world = load_world(args.descriptions_world)
+    read = read_corpora(paths)
+    world = load_world(world_name)
     out = {}
     for name in names:
-        parser = CommandParser.load(name, args.corpus, world)
-        cov = plan_coverage(parser, read.descriptions, limit=args.errors)
-        cov["files"] = ", ".join(str(f) for f in read.files)
-        out[name] = cov
+        cov = plan_coverage(CommandParser.load(name, corpus, world), read.descriptions, limit=limit)
+        out[name] = {"files": [str(f) for f in read.files], "world": world_name, **cov}
     return out
-
-
-def _pct(value) -> str:
-    return "-" if value is None else f"{100 * value:.1f}"
-
-
-def _table(print_table, title: str, accuracies: dict, names) -> None:
-    sys.stdout.write(title + "\n")
-    rows = [[label, *[_pct(accuracies[n].get(key)) for n in names],
-             _pct(DISSERTATION["learned"].get(key))] for key, label in FIELD_ROWS]
-    print_table(rows, ["Grounding type", *[f"{n} (%)" for n in names], "dissertation LSTM (%)"])
-    sys.stdout.write("\n")

@@ -10,49 +10,21 @@
 
 from __future__ import annotations
 
-import argparse
 import math
 import time
 
 import numpy as np
 
+from assistant.eval.progress import Progress, no_progress
+
 CATEGORY_ORDER = ("small table", "chair", "large table", "couch", "bed")
 TEST_PLAN_ARGS = dict(grid=True, random_per_item=16, seed=2)
 OTHER_PLAN_ARGS = dict(grid=True, seed=3)
+#: the classifiers compared by default: the dissertation's three, the random forest and the vote
+DEFAULT_CLASSIFIERS = ("lsvm", "gsvm", "autoencoder", "forest", "vote")
 
 
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--realdata", metavar="PATH",
-                        help="folder of real depth frames (the shared realdata folder) to score too")
-    parser.add_argument("--skip", default="", metavar="PARTS",
-                        help="comma-separated parts to skip: classify,orientation,scenes,real")
-    parser.add_argument("--classifiers", default="lsvm,gsvm,autoencoder,forest,vote",
-                        help="classifiers to compare (default: the dissertation's three, the random "
-                             "forest and the GSVM+forest vote)")
-    parser.add_argument("--train-plans", type=int, default=None, metavar="K",
-                        help="train on the first K training view plans only (default: all; 2 is "
-                             "the previous default, without the views against a wall)")
-    parser.add_argument("--range-m", type=float, default=None, metavar="M",
-                        help="how far ahead (metres) the detector keeps points (default: the "
-                             "product's 4.0, as in the dissertation); an experiment knob")
-    parser.add_argument("--no-coverage", action="store_true",
-                        help="fuse detections by classifier confidence alone (not × view coverage)")
-
-
-def realdata_summary_line(summary: dict) -> str:
-    """One line of the real-frame checks: floors, and each labelled category detected as such."""
-    parts = [f"floor found {summary['floor_found']}/{summary['frames']}"]
-    for what, t in summary["labelled"].items():
-        part = f"{what} {t['correct']}/{t['labelled']}"
-        if t["in_range"] < t["labelled"]:
-            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range)"
-        parts.append(part)
-    parts.append(f"false beds/couches: {summary['false_beds_or_couches_in_negatives']} in the "
-                 f"negatives, {summary['false_beds_or_couches_elsewhere']} elsewhere")
-    return "summary: " + "; ".join(parts)
-
-
-def _frame_params(range_m: float | None):
+def frame_params(range_m: float | None):
     """The detector's frame parameters, with the sample range (points kept, floor grid) set to
     ``range_m`` metres ahead when given."""
     import dataclasses
@@ -70,53 +42,60 @@ def _frame_params(range_m: float | None):
         params.samples, max_forward_m=range_m, x_range_m=(params.samples.x_range_m[0], range_m)))
 
 
-def run(args: argparse.Namespace) -> int:
-    from assistant.cli.common import emit_json
+def evaluate_perception(realdata=None, *, skip=(), classifiers=DEFAULT_CLASSIFIERS,
+                        train_plans: int | None = None, range_m: float | None = None,
+                        coverage: bool = True, progress: Progress = no_progress) -> dict:
+    """Tables 3-6 to 3-9 and, with ``realdata`` (a folder of real frames), the real-frame checks.
 
-    skip = {s.strip() for s in (args.skip or "").split(",") if s.strip()}
-    methods = [m.strip() for m in args.classifiers.split(",") if m.strip()]
-    report: dict = {}
-    t0 = time.perf_counter()
+    ``skip``: parts left out (``classify``, ``orientation``, ``scenes``, ``real``);
+    ``classifiers``: the methods of Tables 3-6/3-7; ``train_plans``: train on the first K
+    training view plans only; ``range_m``: how far ahead the detector keeps points;
+    ``coverage``: weigh detections by view coverage when fusing. Returns the JSON report."""
     from assistant.perception.models import TRAINING_PLANS
 
-    if args.train_plans is not None and not 1 <= args.train_plans <= len(TRAINING_PLANS):
+    skip = set(skip)
+    report: dict = {}
+    t0 = time.perf_counter()
+    if train_plans is not None and not 1 <= train_plans <= len(TRAINING_PLANS):
         from assistant.errors import AssistantError
 
-        raise AssistantError(f"--train-plans must be 1 to {len(TRAINING_PLANS)}, got {args.train_plans}")
-    plans = TRAINING_PLANS[:args.train_plans] if args.train_plans else TRAINING_PLANS
-    frame_params = _frame_params(args.range_m)  # a bad --range-m is reported before any work
-    report["settings"] = {"training_plans": len(plans), "coverage_weighting": not args.no_coverage,
-                          "range_m": frame_params.samples.max_forward_m}
+        raise AssistantError(f"--train-plans must be 1 to {len(TRAINING_PLANS)}, got {train_plans}")
+    plans = TRAINING_PLANS[:train_plans] if train_plans else TRAINING_PLANS
+    params = frame_params(range_m)  # a bad range is reported before any work
+    report["settings"] = {"training_plans": len(plans), "coverage_weighting": coverage,
+                          "range_m": params.samples.max_forward_m}
     detector = None
-    if "scenes" not in skip or (args.realdata and "real" not in skip):
+    if "scenes" not in skip or (realdata and "real" not in skip):
         from assistant.perception.detector import FurnitureDetector
         from assistant.perception.models import trained_models
 
+        progress("training (or loading) the detector's models")
         t = time.perf_counter()
-        detector = FurnitureDetector(trained_models(plans=plans), weigh_coverage=not args.no_coverage,
-                                     params=frame_params)
+        detector = FurnitureDetector(trained_models(plans=plans), weigh_coverage=coverage,
+                                     params=params)
         report["settings"]["detector_ready_seconds"] = round(time.perf_counter() - t, 1)
     if not {"classify", "orientation"} <= skip:
+        progress("rendering (or loading) the view databases")
         train, test, other = databases(plans)
         report["databases"] = {"train": len(train), "test": len(test), "other": len(other),
                                "missed_views": {"test": test.missed, "other": other.missed},
                                "seconds": round(time.perf_counter() - t0, 1)}
         if "classify" not in skip:
-            report["table_3_6"], report["table_3_7"] = classification_tables(train, test, other, methods)
+            progress("Tables 3-6 and 3-7: classifiers")
+            report["table_3_6"], report["table_3_7"] = classification_tables(train, test, other,
+                                                                             classifiers)
         if "orientation" not in skip:
+            progress("Table 3-8: orientation")
             report["table_3_8"] = orientation_table(train, test, other)
     if "scenes" not in skip:
-        report["table_3_9"] = scene_table(detector)
-    if args.realdata and "real" not in skip:
+        report["table_3_9"] = scene_table(detector, progress)
+    if realdata and "real" not in skip:
         from assistant.perception.realdata import evaluate_realdata
 
-        report["realdata"] = evaluate_realdata(args.realdata, detector)
+        progress(f"real frames in {realdata}")
+        report["realdata"] = evaluate_realdata(realdata, detector)
     report["seconds"] = round(time.perf_counter() - t0, 1)
-    if args.json:
-        emit_json(report)
-    else:
-        _print(report)
-    return 0
+    return report
 
 
 def databases(plans=None):
@@ -140,7 +119,7 @@ def _per_category(pred: np.ndarray, truth: np.ndarray) -> dict:
     return out
 
 
-def classification_tables(train, test, other, methods=("lsvm", "gsvm", "autoencoder", "forest", "vote")):
+def classification_tables(train, test, other, methods=DEFAULT_CLASSIFIERS):
     """Tables 3-6 and 3-7: per-category accuracy per classifier (and feature set)."""
     from assistant.perception.models import classifier_input, fit_models
 
@@ -213,7 +192,7 @@ def orientation_table(train, test, other) -> dict:
     return out
 
 
-def scene_table(detector=None) -> dict:
+def scene_table(detector=None, progress: Progress = no_progress) -> dict:
     """Table 3-9 over the 16 scenes, with summary figures."""
     from assistant.perception.detector import FurnitureDetector
     from assistant.eval.perception_scenes import SCENES, evaluate_scene
@@ -221,6 +200,7 @@ def scene_table(detector=None) -> dict:
     detector = detector or FurnitureDetector()
     rows = []
     for number, (world, ids) in enumerate(SCENES, start=1):
+        progress("Table 3-9: scenes", number - 1, len(SCENES))
         row = evaluate_scene(world, ids, detector)
         row["scene"] = number
         rows.append(row)
@@ -235,61 +215,3 @@ def scene_table(detector=None) -> dict:
         "orientation_error_mean_rad": round(float(np.mean(oe)), 3) if oe else None,
         "words_right": sum(1 for r in rows for i in r["items"] if i.get("word_right")),
         "sr_match": f"{sum(1 for r in rows if r['sr_match'])}/{len(rows)}"}}
-
-
-def _print(report: dict) -> None:
-    from assistant.cli.common import print_table
-
-    if "databases" in report:
-        print(f"databases: {report['databases']}")
-    for key, title in (("table_3_6", "Table 3-6: held-out simulated views of the study models"),
-                       ("table_3_7", "Table 3-7: trained on the study models, tested on other instances")):
-        if key not in report:
-            continue
-        print(f"\n{title}")
-        table = report[key]
-        names = list(table)
-        rows = []
-        for c in (*CATEGORY_ORDER, "all"):
-            first = table[names[0]].get(c)
-            if first is None:
-                continue
-            rows.append([c, first["n"], *[f"{100 * table[n][c]['accuracy']:.1f}%" for n in names]])
-        print_table(rows, ["category", "samples", *names])
-    if "table_3_8" in report:
-        print("\nTable 3-8: orientation error, degrees (mean/std)")
-        for db, rows in report["table_3_8"].items():
-            out = []
-            for sub, row in rows.items():
-                lin = row.get("linear")
-                pl = row["plane"]
-                out.append([sub, row["n"], "-" if lin is None else f"{lin['mean']}/{lin['std']}",
-                            f"{pl['mean']}/{pl['std']} (median {pl['median']}, none {pl['no_estimate']})"])
-            print(f"  {db} database")
-            print_table(out, ["subclass", "views", "linear (Table 3-3)", "plane (this product)"])
-    if "table_3_9" in report:
-        print("\nTable 3-9: scenes")
-        rows = []
-        for r in report["table_3_9"]["scenes"]:
-            pe = "/".join(f"{i['position_error_m']:.2f}" if "position_error_m" in i else "miss" for i in r["items"])
-            oe = "/".join(f"{i['orientation_error_rad']:.2f}" if "orientation_error_rad" in i else "-" for i in r["items"])
-            rows.append([r["scene"], r["world"], " ".join(i["id"] for i in r["items"]), pe, oe,
-                         "Y" if r["sr_match"] else "N", r["views"]])
-        print_table(rows, ["#", "world", "items", "PE (m)", "OE (rad)", "SR", "views"])
-        print(f"summary: {report['table_3_9']['summary']}")
-    if "realdata" in report:
-        print("\nReal frames")
-        for folder, frames in report["realdata"]["folders"].items():
-            for f in frames:
-                floor = f["floor"]
-                fl = f"floor {floor['height']:.2f} m, tilt {floor['tilt_deg']:.1f}°, roll {floor['roll_deg']:.1f}°" if floor else "no floor"
-                dets = ", ".join(d["category"] for d in f["detections"]) or f"none ({f['reason']})"
-                print(f"  {folder}/{f['file']}: {fl}; detections: {dets}")
-                for m in f.get("matches", []):
-                    share = (f", {100 * m['in_range_share']:.1f} % within {report['settings']['range_m']:g} m"
-                             if "in_range_share" in m else "")
-                    print(f"      {m['object']}: {m.get('detected')} (pixels {m['pixels']}{share})")
-                for b in f.get("boxes", []):
-                    print(f"      {b['object']}: {b['detected']}")
-        print("  " + realdata_summary_line(report["realdata"]["summary"]))
-    print(f"\n{report['seconds']} s")

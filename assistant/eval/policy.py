@@ -22,7 +22,7 @@ stops after the executor (``assistant.executor.Navigator``) drives it there.
 
 from __future__ import annotations
 
-import argparse
+from assistant.eval.progress import Progress, no_progress
 
 STUDY_HOMES = ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-house")
 TRAINING_LAYOUT = ("training-home", "modified")
@@ -30,36 +30,9 @@ TARGET_MEAN_D_M = 0.3
 DISSERTATION_MEAN_D_M = 0.47
 
 
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--demonstrations", metavar="DIR",
-                        help="demonstration directory to train from (default: corpus/demonstrations)")
-    parser.add_argument("--layout", action="append", metavar="WORLD[:SCENE]",
-                        help="test layouts (repeatable; default: training-home:modified and the "
-                             "four study homes' original scenes)")
-    parser.add_argument("--rdt", action="append", help="only these RDTs (repeatable)")
-    parser.add_argument("--trials", type=int, default=3, help="start poses per RDT and layout (3)")
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--stop-rule", choices=("min-step", "score-falls"), default=None,
-                        help="how the coarse-to-fine search ends (default: the model's, min-step)")
-    parser.add_argument("--unrelated-over", choices=("all", "support"), default=None,
-                        help="u of equation 5-16 over all values (default) or those seen in training")
-    parser.add_argument("--search-starts", type=int, default=None,
-                        help="refine from this many of the best coarse poses (default 5)")
-    parser.add_argument("--reachable-only", action="store_true", default=None,
-                        help="search only floor connected to the robot (0.25 m clearance)")
-    parser.add_argument("--drive", action="store_true",
-                        help="drive the simulated robot there with the executor and measure where it stops")
-    parser.add_argument("--no-cache", action="store_true", help="retrain the models, do not use the cache")
-
-
-def _layouts(args) -> list[tuple[str, str]]:
-    if not args.layout:
-        return [TRAINING_LAYOUT] + [(name, "original") for name in STUDY_HOMES]
-    out = []
-    for text in args.layout:
-        world, _, scene = text.partition(":")
-        out.append((world, scene or "original"))
-    return out
+def default_layouts() -> list[tuple[str, str]]:
+    """The training home's modified scene, then the four study homes' original scenes."""
+    return [TRAINING_LAYOUT] + [(name, "original") for name in STUDY_HOMES]
 
 
 def evaluate_layout(library, world_name: str, scene: str, rdts, trials: int, seed: int,
@@ -132,18 +105,25 @@ def evaluate_layout(library, world_name: str, scene: str, rdts, trials: int, see
     return rows
 
 
+def mean_d(rows) -> float | None:
+    """Mean over ``rows`` (Table 5-1 rows) of their mean distance ``d`` (m); ``None`` for none."""
+    import numpy as np
+
+    return float(np.mean([r["d_mean"] for r in rows])) if rows else None
+
+
 def _pose(p) -> list[float]:
     return [round(float(p.x), 3), round(float(p.y), 3), round(float(p.theta), 4)]
 
 
 def _drive(world, scene, start, goal):
     from assistant.executor import Navigator, build_occupancy
-    from assistant.sim import SimRobot
+    from assistant.robot import make_robot
     from assistant.world import furniture_entities, world_grid
 
     grid = world_grid(world, 0.05)
     occupancy = build_occupancy(world, furniture_entities(world, scene, grid), grid=grid)
-    robot = SimRobot(world, scene, start=start, seed=0)
+    robot = make_robot("sim", world=world, scene=scene, start=start, seed=0)
     robot.connect()
     try:
         result = Navigator(world, lambda: occupancy).go_to(robot, (goal.x, goal.y), goal.theta)
@@ -152,60 +132,38 @@ def _drive(world, scene, start, goal):
         robot.close()
 
 
-def run(args: argparse.Namespace) -> int:
+def evaluate_policy(demonstrations=None, *, layouts=None, rdts=None, trials: int = 3, seed: int = 7,
+                    drive: bool = False, use_cache: bool = True, model_params: dict | None = None,
+                    progress: Progress = no_progress) -> dict:
+    """Table 5-1 on each of ``layouts`` ((world, scene) pairs; default
+    :func:`default_layouts`) for ``rdts`` (default every RDT of the table), with the policy models
+    trained from ``demonstrations`` (default: the corpus's). ``model_params``: the model's search
+    settings (``stop_rule``, ``unrelated_over``, ``search_starts``, ``reachable_only``).
+    Returns the JSON report: the rows and the mean ``d`` of the first layout and of the others."""
     import time
 
-    import numpy as np
-
-    from assistant.cli.common import emit_json, print_table
     from assistant.policy.library import PolicyLibrary
     from assistant.policy.rdt import TABLE_RDTS, parse_rdt
 
-    params = {k: v for k, v in (("stop_rule", args.stop_rule), ("unrelated_over", args.unrelated_over),
-                                ("search_starts", args.search_starts),
-                                ("reachable_only", args.reachable_only)) if v is not None}
+    params = dict(model_params or {})
     t0 = time.perf_counter()
-    library = PolicyLibrary(args.demonstrations, use_cache=not args.no_cache, **params)
+    progress("training (or loading) the policy models")
+    library = PolicyLibrary(demonstrations, use_cache=use_cache, **params)
     library.models
     train_s = time.perf_counter() - t0
-    rdts = [parse_rdt(r).name for r in args.rdt] if args.rdt else list(TABLE_RDTS)
-    layouts = _layouts(args)
+    rdts = [parse_rdt(r).name for r in rdts] if rdts else list(TABLE_RDTS)
+    layouts = list(layouts) if layouts else default_layouts()
     all_rows = []
-    for world, scene in layouts:
-        all_rows.extend(evaluate_layout(library, world, scene, rdts, args.trials, args.seed, args.drive))
+    for number, (world, scene) in enumerate(layouts):
+        progress(f"layout {world}:{scene}", number, len(layouts))
+        all_rows.extend(evaluate_layout(library, world, scene, rdts, trials, seed, drive))
     elapsed = time.perf_counter() - t0
-
-    def mean_d(rows):
-        return float(np.mean([r["d_mean"] for r in rows])) if rows else None
-
     primary = [r for r in all_rows if (r["world"], r["scene"]) == layouts[0]]
     others = [r for r in all_rows if (r["world"], r["scene"]) != layouts[0]]
-    summary = {"layouts": [f"{w}:{s}" for w, s in layouts], "trials": args.trials, "seed": args.seed,
-               "drive": bool(args.drive), "model_params": params,
-               "demonstrations": str(library.directory), "trained_from_cache": library.loaded_from_cache,
-               "train_seconds": round(train_s, 2), "seconds": round(elapsed, 1),
-               "mean_d": mean_d(primary), "mean_d_layout": f"{layouts[0][0]}:{layouts[0][1]}",
-               "mean_d_other_layouts": mean_d(others), "target_mean_d": TARGET_MEAN_D_M,
-               "dissertation_mean_d": DISSERTATION_MEAN_D_M, "rows": all_rows}
-    if args.json:
-        emit_json(summary)
-        return 0
-    for world, scene in layouts:
-        rows = [r for r in all_rows if (r["world"], r["scene"]) == (world, scene)]
-        print(f"\n{world} ({scene} scene): {len(rows)} RDTs with an instance, {args.trials} trials each")
-        if not rows:
-            continue
-        table = []
-        for r in rows:
-            t = "-" if r["T_total"] is None else f"{r['T_success']}/{r['T_total']}"
-            model = r["rdt"] if r["model"] == r["rdt"] else f"{r['rdt']} (model {r['model']})"
-            table.append([r["number"] or "", r["nsld"], model, f"{r['d_mean']:.2f}/{r['d_std']:.2f}",
-                          f"{r['theta_mean']:.2f}/{r['theta_std']:.2f}", t])
-        print_table(table, ["#", "NSLD", "RDT", "d (m) mean/std", "θ (rad) mean/std", "T"])
-        print(f"mean d over {len(rows)} RDTs: {mean_d(rows):.3f} m")
-    print(f"\nmean d on {summary['mean_d_layout']}: {summary['mean_d']:.3f} m "
-          f"(target ≤ {TARGET_MEAN_D_M} m; dissertation about {DISSERTATION_MEAN_D_M} m)")
-    if others:
-        print(f"mean d on the other layouts: {summary['mean_d_other_layouts']:.3f} m")
-    print(f"trained in {train_s:.1f} s{' (cache)' if library.loaded_from_cache else ''}, total {elapsed:.0f} s")
-    return 0
+    return {"layouts": [f"{w}:{s}" for w, s in layouts], "trials": trials, "seed": seed,
+            "drive": bool(drive), "model_params": params,
+            "demonstrations": str(library.directory), "trained_from_cache": library.loaded_from_cache,
+            "train_seconds": round(train_s, 2), "seconds": round(elapsed, 1),
+            "mean_d": mean_d(primary), "mean_d_layout": f"{layouts[0][0]}:{layouts[0][1]}",
+            "mean_d_other_layouts": mean_d(others), "target_mean_d": TARGET_MEAN_D_M,
+            "dissertation_mean_d": DISSERTATION_MEAN_D_M, "rows": all_rows}

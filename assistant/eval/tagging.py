@@ -15,38 +15,21 @@ product does) and with the gold ones; the share of descriptions whose labels are
 
 from __future__ import annotations
 
-import argparse
-import sys
 from pathlib import Path
 
-__all__ = ["add_arguments", "run", "score", "default_test_paths"]
+from assistant.eval.progress import Progress, no_progress
+
+__all__ = ["evaluate_tagging", "consistency_reports", "score", "coverage", "cross_validate",
+           "default_test_paths"]
 
 CSISL_FILES = ("csisl_real_descriptions_annotated.xml", "csisl_templates149_annotated.xml")
 
 
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--corpus", action="append", metavar="PATH",
-                        help="training corpus file or folder (repeatable; default: the "
-                             "repository's corpus/*.xml or $ASSISTANT_CORPUS)")
-    parser.add_argument("--test", action="append", metavar="PATH",
-                        help="test corpus file (repeatable; default: the two CSISL XML files "
-                             "in ../shared/realdata/csisl/ if present)")
-    parser.add_argument("--no-test", action="store_true",
-                        help="skip experiment (b): only cross-validate on the training corpus")
-    parser.add_argument("--folds", type=int, default=10,
-                        help="cross-validation folds on the training corpus (0 to skip; default 10)")
-    parser.add_argument("--top", type=int, default=8, help="confusions to list per set (default 8)")
-    parser.add_argument("--consistency", action="append", metavar="PATH",
-                        help="instead of (a)/(b): measure how consistent the annotation of PATH is "
-                             "with itself (context-majority ceilings, repeated n-grams, identical "
-                             "descriptions, conventions) and, unless --folds 0, cross-validate the "
-                             "chunker within PATH (repeatable)")
-
-
 def default_test_paths() -> list[Path]:
-    from assistant.language.corpus import repo_root
+    """The CSISL real descriptions and templates, those of them that are there."""
+    from assistant.eval.csisl import csisl_folder
 
-    folder = repo_root().parent / "shared" / "realdata" / "csisl"
+    folder = csisl_folder()
     return [folder / name for name in CSISL_FILES if (folder / name).exists()]
 
 
@@ -116,7 +99,9 @@ def coverage(train_trees, test_trees, top: int = 10) -> dict:
     }
 
 
-def _cross_validate(trees, folds: int) -> dict:
+def cross_validate(trees, folds: int, progress: Progress = no_progress) -> dict:
+    """k-fold cross-validation of the tagger and chunker on ``trees`` (seeded folds); accuracy
+    figures weighted over the folds, each fold's lowest, and the summed confusion counts."""
     import numpy as np
     from sklearn.model_selection import KFold
 
@@ -127,7 +112,8 @@ def _cross_validate(trees, folds: int) -> dict:
     splitter = KFold(n_splits=folds, shuffle=True, random_state=0)
     totals: dict = {}
     per_fold = []
-    for train_idx, test_idx in splitter.split(np.arange(len(trees))):
+    for fold, (train_idx, test_idx) in enumerate(splitter.split(np.arange(len(trees)))):
+        progress("cross-validation folds", fold, folds)
         train = [trees[i] for i in train_idx]
         test = [trees[i] for i in test_idx]
         tagger = SemanticPosTagger().fit([list(zip(t.words, t.pos_tags)) for t in train])
@@ -150,158 +136,91 @@ def _cross_validate(trees, folds: int) -> dict:
     return out
 
 
-def run(args: argparse.Namespace) -> int:
+def evaluate_tagging(train_paths=None, test_paths=None, *, folds: int = 10, top: int = 8,
+                     progress: Progress = no_progress) -> dict:
+    """Experiments (a) and (b): ``folds``-fold cross-validation on the training corpus (skipped
+    below 2) and, for each of ``test_paths``, the model trained on the whole training corpus.
+
+    ``train_paths`` default to the repository's corpus, ``test_paths`` (``None``) to the CSISL
+    files when present (``[]``: none). Returns the JSON report: ``training_corpus``,
+    ``training_descriptions``, ``training_seconds`` and ``results`` (``cross_validation`` and
+    one entry per test file, with the ``top`` most frequent confusions)."""
     import time
 
-    from assistant.cli.common import emit_json, print_table
     from assistant.errors import AssistantError
-    from assistant.language.consistency import errors_by_construction
     from assistant.language.corpus import default_corpus_paths, read_corpora, read_corpus
     from assistant.language.pipeline import LanguageModel
 
-    if getattr(args, "consistency", None):
-        return _run_consistency(args)
-    train_paths = [Path(p) for p in args.corpus] if args.corpus else default_corpus_paths()
+    train_paths = [Path(p) for p in train_paths] if train_paths else default_corpus_paths()
     if not train_paths:
         raise AssistantError("no training corpus: corpus/*.xml is empty; give --corpus PATH")
-    test_paths = ([] if args.no_test else
-                  [Path(p) for p in args.test] if args.test else default_test_paths())
+    test_paths = default_test_paths() if test_paths is None else [Path(p) for p in test_paths]
     missing = [str(p) for p in (*train_paths, *test_paths) if not Path(p).exists()]
     if missing:
         raise AssistantError(f"no such corpus file: {', '.join(missing)}; give existing "
                              "CSISL-format XML files with --corpus / --test")
-    log = sys.stderr
-    print(f"training corpus: {', '.join(map(str, train_paths))}", file=log)
-    print(f"test files: {', '.join(map(str, test_paths)) or '(none)'}", file=log)
+    progress(f"training corpus: {', '.join(map(str, train_paths))}")
+    progress(f"test files: {', '.join(map(str, test_paths)) or '(none)'}")
 
     corpus = read_corpora(train_paths)
     if corpus.problems:
-        print(f"training corpus: {len(corpus.problems)} problems (first: {corpus.problems[0]})",
-              file=log)
+        progress(f"training corpus: {len(corpus.problems)} problems (first: {corpus.problems[0]})")
     trees = corpus.trees()
-    rows = []
     results: dict = {}
-    if args.folds and args.folds > 1:
+    if folds and folds > 1:
         started = time.perf_counter()
-        results["cross_validation"] = _cross_validate(trees, args.folds)
+        results["cross_validation"] = cross_validate(trees, folds, progress)
         results["cross_validation"]["seconds"] = time.perf_counter() - started
-        rows.append(("training corpus", f"{results['cross_validation']['folds']}-fold CV",
-                     results["cross_validation"]))
     started = time.perf_counter()
+    if test_paths:
+        progress("training the tagger and chunker on the whole training corpus")
     model = LanguageModel.load(train_paths, use_cache=False) if test_paths else None
     train_seconds = time.perf_counter() - started
     for path in test_paths:
         test = read_corpus(path)
         if test.problems:
-            print(f"{path}: {len(test.problems)} problems read around (see `--json`)", file=log)
+            progress(f"{path}: {len(test.problems)} problems read around (see `--json`)")
         result = score(model.tagger, model.chunker, test.trees())
         result["problems"] = test.problems
-        result["coverage"] = coverage(trees, test.trees(), args.top)
+        result["coverage"] = coverage(trees, test.trees(), top)
         results[str(path)] = result
-        rows.append((Path(path).name, "trained on corpus", result))
-
-    if args.json:
-        emit_json({
-            "training_corpus": [str(p) for p in train_paths],
-            "training_descriptions": len(trees),
-            "training_seconds": train_seconds,
-            "results": {k: _public(v, args.top) for k, v in results.items()},
-        })
-        return 0
-    if model is not None:
-        print(f"trained on {len(trees)} descriptions in {train_seconds:.1f} s")
-    print_table(
-        [(name, how, r["descriptions"], r["words"], _pct(r["pos_accuracy"]),
-          _pct(r["chunk_accuracy"]), _pct(r["chunk_accuracy_gold_pos"]),
-          _pct(r["chunk_exact_match"])) for name, how, r in rows],
-        ["test set", "method", "descr.", "words", "POS acc", "chunk acc", "chunk acc (gold POS)",
-         "chunk exact"],
-    )
-    for name, _, r in rows:
-        print(f"\n{name}: most frequent errors (gold → predicted, count)")
-        for label, conf in (("POS", r["_pos_confusions"]), ("chunk", r["_chunk_confusions"])):
-            top = conf.most_common(args.top)
-            print(f"  {label:5s} " + ("; ".join(f"{g} → {p} ×{n}" for (g, p), n in top) or "none"))
-        print("  chunk errors by construction (share of words): " + "; ".join(
-            f"{name} ×{n} ({_pct(n / r['words'])})"
-            for name, n in errors_by_construction(r["_chunk_confusions"])))
-        cov = r.get("coverage")
-        if cov:
-            print(f"  not in the training corpus: {_pct(cov['unseen_path_word_share'])} of words "
-                  f"have a label path never seen ("
-                  + ", ".join(f"{u['path']} ×{u['words']}" for u in cov["unseen_paths"][:5])
-                  + f"); {_pct(cov['oov_token_share'])} of tokens are unseen words ("
-                  + ", ".join(f"{u['word']} ×{u['count']}" for u in cov["oov_words"][:8]) + ")")
-            print("  label share test vs training: " + "; ".join(
-                f"{u['path']} {_pct(u['test'])} vs {_pct(u['train'])}"
-                for u in cov["path_share_shift"][:6]))
-    return 0
+    return {
+        "training_corpus": [str(p) for p in train_paths],
+        "training_descriptions": len(trees),
+        "training_seconds": train_seconds,
+        "results": {k: _public(v, top) for k, v in results.items()},
+    }
 
 
-def _run_consistency(args: argparse.Namespace) -> int:
-    """``--consistency PATH``: the self-consistency report of each file (see
-    :mod:`assistant.language.consistency`) and its within-file k-fold CV figure."""
+def consistency_reports(paths, folds: int = 10, progress: Progress = no_progress) -> dict:
+    """``--consistency PATH``: path → the self-consistency report of each file (see
+    :mod:`assistant.language.consistency`) with its within-file k-fold CV figure (unless
+    ``folds`` < 2)."""
     import time
 
-    from assistant.cli.common import emit_json, print_table
     from assistant.errors import AssistantError
     from assistant.language.consistency import consistency_report
     from assistant.language.corpus import read_corpus
 
-    missing = [p for p in args.consistency if not Path(p).exists()]
+    missing = [str(p) for p in paths if not Path(p).exists()]
     if missing:
         raise AssistantError(f"no such corpus file: {', '.join(missing)}; give CSISL-format XML "
                              "files with --consistency PATH")
     reports = {}
-    for path in args.consistency:
+    for path in paths:
         read = read_corpus(path)
         trees = [t for t in read.trees() if t.words]
         if not trees:
             raise AssistantError(f"{path}: no readable descriptions to measure")
+        progress(f"consistency of {path}")
         report = consistency_report(trees)
-        if args.folds and args.folds > 1:
+        if folds and folds > 1:
             started = time.perf_counter()
-            cv = _cross_validate(trees, args.folds)
+            cv = cross_validate(trees, folds, progress)
             report["cross_validation"] = {k: v for k, v in cv.items() if not k.startswith("_")}
             report["cross_validation"]["seconds"] = time.perf_counter() - started
         reports[str(path)] = report
-    if args.json:
-        emit_json({"consistency": reports})
-        return 0
-    for path, r in reports.items():
-        print(f"{path}: {r['descriptions']} descriptions, {r['words']} words")
-        print_table(
-            [(f"±{w['k']}", w["contexts"], _pct(w["ceiling"]), _pct(w["repeated_word_share"]),
-              _pct(w["repeated_agreement"]), _pct(l["accuracy"]))
-             for w, l in zip(r["window_ceiling"], r["leave_one_out_context"])],
-            ["context (words+POS)", "contexts", "ceiling (in-sample majority)",
-             "words in repeated contexts", "majority agreement there",
-             "leave-one-out context majority"],
-        )
-        print("repeated n-grams (with POS), share of occurrences labelled as the n-gram's "
-              "majority: " + "; ".join(f"{g['n']}-grams {_pct(g['agreement'])} of "
-                                       f"{g['occurrences']}" for g in r["ngram_agreement"]))
-        d = r["duplicates"]
-        print(f"identical descriptions: {d['groups']} groups ({d['descriptions']} descriptions), "
-              f"{d['identical_pairs']}/{d['pairs']} pairs labelled identically, pairwise "
-              f"per-word agreement {_pct(d['pairwise_word_agreement'])}")
-        cv = r.get("cross_validation")
-        if cv:
-            print(f"within-file {cv['folds']}-fold CV (POS tagger + chunker trained on the other "
-                  f"folds): POS {_pct(cv['pos_accuracy'])}, chunk {_pct(cv['chunk_accuracy'])} "
-                  f"(gold POS {_pct(cv['chunk_accuracy_gold_pos'])}), exact "
-                  f"{_pct(cv['chunk_exact_match'])}, {cv['seconds']:.0f} s")
-        print("conventions (label choices counted):")
-        for name, counts in r["conventions"].items():
-            total = sum(counts.values()) or 1
-            print(f"  {name}: " + ", ".join(f"{k} {v} ({_pct(v / total)})"
-                                            for k, v in list(counts.items())[:5]))
-        print()
-    return 0
-
-
-def _pct(value: float) -> str:
-    return f"{100 * value:.1f}%"
+    return reports
 
 
 def _public(result: dict, top: int) -> dict:

@@ -31,11 +31,15 @@ from typing import Callable
 
 import numpy as np
 
+from assistant.generation.entry import entry_heading
 from assistant.generation.types import ContentNode
+from assistant.geometry import box_polygon
 from assistant.spatial.resolve import closeness, strongest_direction
+from assistant.spatial.srv import dir_srv, dist_srv
+from assistant.world import Entity, EntityKind
 from assistant.world import load_catalogue
 
-__all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "entry_heading", "objective_values",
+__all__ = ["ALPHA", "LISTENER_SHARE", "SIZE_WORDS", "UNIQUENESS", "Candidate", "candidate_nodes", "objective_values",
            "select_content", "support_of", "wall_band"]
 
 ALPHA = 0.1
@@ -87,7 +91,7 @@ def support_of(sighting, furniture: list) -> object | None:
     """The furniture entity the object lies on: the one whose footprint is nearest to the
     object's position (within 0.5 m), preferring its room."""
     best, best_d = None, 0.5
-    p = np.array([sighting.x, sighting.y])
+    p = np.array([sighting.x_m, sighting.y_m])
     for ent in furniture:
         if not len(ent.cells):
             continue
@@ -97,39 +101,6 @@ def support_of(sighting, furniture: list) -> object | None:
         if d < best_d:
             best, best_d = ent, d
     return best
-
-
-def entry_heading(floorplan, room: str, listener_pose=None) -> float | None:
-    """The heading (radians) of a person entering ``room``: through the door (or open-plan
-    opening, :attr:`~assistant.world.Floorplan.openings`) on the way from the listener (if
-    given and elsewhere), else the room's first door; the listener's own heading when they
-    are already inside; None when it cannot be told."""
-    r = floorplan.room(room)
-    if listener_pose is not None and r.contains(listener_pose.x, listener_pose.y):
-        return float(listener_pose.theta)
-    doors = floorplan.passages_of(room)  # doors, and open-plan openings: how a person walks in
-    if listener_pose is not None and doors:
-        from assistant.generation.route import room_path
-
-        path = room_path(floorplan, listener_pose, room)
-        if path and len(path) >= 2:
-            prev = path[-2]
-            doors = [d for d in doors if prev in d.connects] or doors
-    doors = [d for d in doors if all(c in floorplan.room_names for c in d.connects)] or doors
-    if not doors:
-        return None
-    return inward_heading(r, doors[0].centre)
-
-
-def inward_heading(room, point) -> float:
-    """Heading perpendicular to the room's nearest bounding-box side at ``point``, pointing in."""
-    poly = room.polygon_array
-    xmin, ymin = poly.min(axis=0)
-    xmax, ymax = poly.max(axis=0)
-    x, y = point
-    sides = {0.0: abs(x - xmin), math.pi: abs(x - xmax), math.pi / 2: abs(y - ymin),
-             -math.pi / 2: abs(y - ymax)}
-    return min(sides, key=sides.get)
 
 
 def room_depth(room, heading: float, point) -> float:
@@ -158,9 +129,6 @@ def wall_side(room, side_angle: float) -> tuple[str, int, float]:
 def wall_band(room, side_angle: float, grid, thickness_m: float = 0.2):
     """The strip along the side of ``room`` (bounding box) whose outward normal is nearest
     ``side_angle``, as an entity on ``grid``."""
-    from assistant.geometry import box_polygon
-    from assistant.world import Entity, EntityKind
-
     poly = room.polygon_array
     xmin, ymin = poly.min(axis=0)
     xmax, ymax = poly.max(axis=0)
@@ -172,6 +140,41 @@ def wall_band(room, side_angle: float, grid, thickness_m: float = 0.2):
                                box_polygon(*box), grid, room=room.name)
 
 
+class _Relations:
+    """The spatial layer's readings of furniture pairs for one description, each pair's SRVs
+    computed once (:mod:`assistant.spatial.resolve`)."""
+
+    def __init__(self):
+        self._memo: dict = {}
+
+    def _once(self, key, compute):
+        if key not in self._memo:
+            self._memo[key] = compute()
+        return self._memo[key]
+
+    def dir_srv(self, ref, x):
+        return self._once(("dir", ref.id, x.id), lambda: dir_srv(ref, x))
+
+    def dist_srv(self, ref, x):
+        return self._once(("dist", ref.id, x.id), lambda: dist_srv(ref, x))
+
+    def directional(self, ref, x, strict: bool = True):
+        """(strongest outer direction, P) of ``x`` around ``ref`` when it holds, else None.
+        ``strict`` (for the support: say only what is clearly true) needs the DIST-SRV near
+        + superposition + half of middle ≥ MIN_NEAR; otherwise (for a look-alike: rule out only
+        what is clearly false) it is enough that ``far`` is not the strongest distance word."""
+        if x is ref or ref.orientation_rad is None:
+            return None
+        word, weight = self._once(("strongest", ref.id, x.id), lambda: strongest_direction(ref, x))
+        dist = self.dist_srv(ref, x)
+        prox = _near_or_middle(dist)
+        close = prox >= MIN_NEAR if strict else dist.strongest()[0] != "far"
+        return (word, weight * prox) if weight >= MIN_DIRECTION and close else None
+
+    def beside(self, ref, x) -> float:
+        return 0.0 if x is ref else closeness(self.dist_srv(ref, x))
+
+
 def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose=None,
                     include_room: bool = True, policy_score=None) -> list[Candidate]:
     """Every true candidate content node for the object (see the module docstring).
@@ -179,34 +182,12 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
     furniture relation's probability is then the geometric mean of the spatial relations'
     (direction weight × nearness) and the learned policy model's score of the pair (kept alone
     when no model covers the RDT)."""
-    from assistant.geometry import box_polygon
-    from assistant.spatial import dir_srv as _dir_srv
-    from assistant.spatial import dist_srv as _dist_srv
-    from assistant.world import Entity, EntityKind
-
-    memo: dict = {}
-
-    def dir_srv(ref, x):  # each pair's SRVs are computed once per description
-        key = ("dir", ref.id, x.id)
-        if key not in memo:
-            memo[key] = _dir_srv(ref, x)
-        return memo[key]
-
-    def dist_srv(ref, x):
-        key = ("dist", ref.id, x.id)
-        if key not in memo:
-            memo[key] = _dist_srv(ref, x)
-        return memo[key]
-
     room_name = support.room or sighting.room
     room = floorplan.room(room_name)
     word = support.name
-    grid = support.grid
-    out: list[Candidate] = []
-
-    out.append(Candidate(ContentNode("support", "support", f"room-center-{word}", 1.0,
-                                     {"support": word}, support.id),
-                         lambda x: True, "support", forced=True))
+    out: list[Candidate] = [Candidate(ContentNode("support", "support", f"room-center-{word}", 1.0,
+                                                  {"support": word}, support.id),
+                                      lambda x: True, "support", forced=True)]
     listener_inside = listener_pose is not None and room.contains(listener_pose.x, listener_pose.y)
     if include_room and not listener_inside:
         # said whenever the listener is elsewhere (6.2 II.D: only a listener in the room makes
@@ -214,104 +195,115 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
         # bed" does not know which room to go to
         out.append(Candidate(ContentNode("room", "room", None, 1.0, {"room": room_name}),
                              lambda x, r=room_name: x.room == r, "room", forced=True))
+    relations = _Relations()
+    out += _furniture_candidates(support, furniture, room_name, relations, policy_score)
+    out += _size_candidates(support, furniture, room_name)
+    out += _wall_candidates(support, room, floorplan, listener_pose, relations)
+    out += _centre_candidates(support, room)
+    out += _door_candidates(support, room_name, floorplan, relations)
+    return out
 
-    # references by word: "the chair" may be any chair of the room, so a relation rules a
-    # distractor out only when it holds for none of them
+
+def _furniture_candidates(support, furniture, room_name: str, relations: _Relations,
+                          policy_score) -> list[Candidate]:
+    """Relations to the furniture of the support's room, per reference word: "the chair" may
+    be any chair of the room, so a relation rules a distractor out only when it holds for none
+    of them."""
+    word = support.name
     by_word: dict[str, list] = {}
     for ref in furniture:
         if ref is not support and ref.room == room_name and len(ref.cells):
             by_word.setdefault(ref.name, []).append(ref)
-
-    def directional(ref, x, strict=True):
-        """(strongest outer direction, P) of ``x`` around ``ref`` when it holds, else None.
-        ``strict`` (for the support: say only what is clearly true) needs the DIST-SRV near
-        + superposition + half of middle ≥ MIN_NEAR; otherwise (for a look-alike: rule out only
-        what is clearly false) it is enough that ``far`` is not the strongest distance word."""
-        if x is ref or ref.orientation_rad is None:
-            return None
-        key = ("strongest", ref.id, x.id)
-        if key not in memo:
-            memo[key] = strongest_direction(ref, x)
-        word, weight = memo[key]
-        dist = dist_srv(ref, x)
-        prox = _near_or_middle(dist)
-        close = prox >= MIN_NEAR if strict else dist.strongest()[0] != "far"
-        ok = weight >= MIN_DIRECTION and close
-        return (word, weight * prox) if ok else None
-
-    def beside(ref, x):
-        return 0.0 if x is ref else closeness(dist_srv(ref, x))
-
+    out = []
     for ref_word, refs in sorted(by_word.items()):
         best: dict[str, tuple[float, str]] = {}  # direction → (P, reference id)
         for ref in refs:
-            got = directional(ref, support)
+            got = relations.directional(ref, support)
             if got is not None and got[1] > best.get(got[0], (0.0, ""))[0]:
                 best[got[0]] = (got[1], ref.id)
-            p = beside(ref, support)
+            p = relations.beside(ref, support)
             if p >= MIN_NEAR and p > best.get("beside", (0.0, ""))[0]:
                 best["beside"] = (p, ref.id)
         for direction, (p, ref_id) in sorted(best.items()):
             if policy_score is not None:
                 ref = next(r for r in refs if r.id == ref_id)
-                srvs = {"dir:ref->tar": dir_srv(ref, support), "dist:ref->tar": dist_srv(ref, support),
-                        "dist:tar->ref": dist_srv(support, ref)}
+                srvs = {"dir:ref->tar": relations.dir_srv(ref, support),
+                        "dist:ref->tar": relations.dist_srv(ref, support),
+                        "dist:tar->ref": relations.dist_srv(support, ref)}
                 q = policy_score.score(f"{ref_word}-{direction}-{word}", srvs)
                 if q is not None:
                     p = math.sqrt(p * q)
-            # the references are in the support's room: furniture elsewhere is not near them.
-            # A look-alike stays a candidate for the listener only when the relation holds for
-            # it loosely AND fits it nearly as well as the support (a listener, like the fetch
-            # task, takes the table that fits "in front of the couch" best); direction words only
-            bar = LISTENER_SHARE * p
-            if direction == "beside":
-                # "by the bed" says nothing of the side: any look-alike near one is confusable
-                test = (lambda x, refs=refs: x.room == room_name and
-                        any(beside(r, x) >= MIN_NEAR for r in refs))
-            else:
-                def test(x, refs=refs, dwd=direction, bar=bar):
-                    if x.room != room_name:
-                        return False
-                    for r in refs:
-                        got = directional(r, x, False)
-                        if got is not None and got[0] == dwd and got[1] >= bar:
-                            return True
-                    return False
             out.append(Candidate(
                 ContentNode("relation", f"furniture-{direction}", f"{ref_word}-{direction}-{word}", p,
                             {"ref": ref_word, "direction": direction}, ref_id),
-                test, "ref:" + ref_word))
+                _look_alike_test(direction, refs, room_name, relations, LISTENER_SHARE * p),
+                "ref:" + ref_word))
+    return out
 
+
+def _look_alike_test(direction: str, refs: list, room_name: str, relations: _Relations, bar: float):
+    """Whether a furniture relation leaves a look-alike ``x`` confusable with the support.
+
+    The references are in the support's room: furniture elsewhere is not near them. A
+    look-alike stays a candidate for the listener only when the relation holds for it loosely
+    AND fits it nearly as well as the support (``bar``: a listener, like the fetch task, takes
+    the table that fits "in front of the couch" best); "by the bed" says nothing of the side,
+    so any look-alike near one is confusable."""
+    if direction == "beside":
+        return lambda x: x.room == room_name and any(relations.beside(r, x) >= MIN_NEAR for r in refs)
+
+    def test(x):
+        if x.room != room_name:
+            return False
+        for r in refs:
+            got = relations.directional(r, x, False)
+            if got is not None and got[0] == direction and got[1] >= bar:
+                return True
+        return False
+    return test
+
+
+def _size_candidates(support, furniture, room_name: str) -> list[Candidate]:
+    """"the end table": the support's size tells it from tables of the other size."""
     size_word = SIZE_WORDS.get(getattr(support, "category", None) or "")
-    if size_word is not None and any(
-            x is not support and x.name == word and x.room == room_name
+    if size_word is None or not any(
+            x is not support and x.name == support.name and x.room == room_name
             and getattr(x, "category", None) and x.category != support.category for x in furniture):
-        # "the end table": the support's size tells it from tables of the other size
-        out.append(Candidate(ContentNode("size", "size", None, SIZE_PROBABILITY, {"support": size_word}),
-                             lambda x, c=support.category: getattr(x, "category", None) == c, "size"))
+        return []
+    return [Candidate(ContentNode("size", "size", None, SIZE_PROBABILITY, {"support": size_word}),
+                      lambda x, c=support.category: getattr(x, "category", None) == c, "size")]
 
-    heading = entry_heading(floorplan, room_name, listener_pose)
-    if heading is not None:
-        for side, offset in WALL_SIDES.items():
-            band = wall_band(room, heading + offset, grid)
-            _, axis, coord = wall_side(room, heading + offset)
 
-            def against(x, strict=True, band=band, axis=axis, coord=coord):
-                """Strict for the support; for a look-alike, anything a listener might still
-                call "against the wall" counts."""
-                if x.room != band.room:
-                    return False
-                gap = float(np.abs(x.points_m()[:, axis] - coord).min())
-                if not strict:
-                    return gap <= LOOSE_WALL_GAP_M
-                return gap <= MAX_WALL_GAP_M and closeness(dist_srv(band, x)) >= MIN_NEAR
+def _wall_candidates(support, room, floorplan, listener_pose, relations: _Relations) -> list[Candidate]:
+    """"against the left wall", the walls named as one walks into the room."""
+    heading = entry_heading(floorplan, room.name, listener_pose)
+    if heading is None:
+        return []
+    out = []
+    for side, offset in WALL_SIDES.items():
+        band = wall_band(room, heading + offset, support.grid)
+        _, axis, coord = wall_side(room, heading + offset)
 
-            if against(support):
-                out.append(Candidate(
-                    ContentNode("relation", f"wall-{side}", f"wall-{side}-{word}",
-                                closeness(dist_srv(band, support)), {"direction": side}, band.id),
-                    lambda x, f=against: f(x, strict=False), "wall"))
+        def against(x, strict=True, band=band, axis=axis, coord=coord):
+            """Strict for the support; for a look-alike, anything a listener might still
+            call "against the wall" counts."""
+            if x.room != band.room:
+                return False
+            gap = float(np.abs(x.points_m()[:, axis] - coord).min())
+            if not strict:
+                return gap <= LOOSE_WALL_GAP_M
+            return gap <= MAX_WALL_GAP_M and closeness(relations.dist_srv(band, x)) >= MIN_NEAR
 
+        if against(support):
+            out.append(Candidate(
+                ContentNode("relation", f"wall-{side}", f"wall-{side}-{support.name}",
+                            closeness(relations.dist_srv(band, support)), {"direction": side}, band.id),
+                lambda x, f=against: f(x, strict=False), "wall"))
+    return out
+
+
+def _centre_candidates(support, room) -> list[Candidate]:
+    """"in the middle of the room"."""
     poly = room.polygon_array
     size = float(min(poly.max(axis=0) - poly.min(axis=0)))
     centre = (poly.max(axis=0) + poly.min(axis=0)) / 2
@@ -320,22 +312,27 @@ def candidate_nodes(sighting, support, furniture: list, floorplan, listener_pose
         return math.exp(-(float(np.linalg.norm(x.centroid_m - centre)) / (0.2 * size)) ** 2)
 
     p = central(support)
-    if p >= MIN_NEAR:
-        out.append(Candidate(ContentNode("relation", "room-center", f"room-center-{word}", p,
-                                         {"direction": "center"}),
-                             lambda x: x.room == room_name and central(x) >= MIN_NEAR, "wall"))
+    if p < MIN_NEAR:
+        return []
+    return [Candidate(ContentNode("relation", "room-center", f"room-center-{support.name}", p,
+                                  {"direction": "center"}),
+                      lambda x: x.room == room.name and central(x) >= MIN_NEAR, "wall")]
 
+
+def _door_candidates(support, room_name: str, floorplan, relations: _Relations) -> list[Candidate]:
+    """"by the door"."""
+    out = []
     for door in floorplan.doors_of(room_name):
         cx, cy = door.centre
         half = door.width_m / 2
         ent = Entity.from_polygon(f"door:{door.name}", "door", EntityKind.LONG_TERM,
-                                  box_polygon(cx - half, cy - half, cx + half, cy + half), grid)
-        p = closeness(dist_srv(ent, support))
+                                  box_polygon(cx - half, cy - half, cx + half, cy + half), support.grid)
+        p = closeness(relations.dist_srv(ent, support))
         if p >= MIN_NEAR:
-            out.append(Candidate(ContentNode("relation", "door-beside", f"door-beside-{word}", p,
+            out.append(Candidate(ContentNode("relation", "door-beside", f"door-beside-{support.name}", p,
                                              {"direction": "beside"}, ent.id),
                                  lambda x, ent=ent: (x.room == room_name
-                                                     and closeness(dist_srv(ent, x)) >= MIN_NEAR),
+                                                     and closeness(relations.dist_srv(ent, x)) >= MIN_NEAR),
                                  "door"))
     return out
 

@@ -255,7 +255,7 @@ class GenerationModel:
 
 
 # ---------------------------------------------------------------------------------- loading
-def _corpus_files(corpus_paths=None) -> tuple[list[Path], list[Path]]:
+def corpus_files(corpus_paths=None) -> tuple[list[Path], list[Path]]:
     """(XML files, chunk-grounding CSV files) of the corpus (``--corpus`` or the repository's)."""
     from assistant.language.corpus import default_corpus_paths
 
@@ -288,7 +288,7 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
     XML file is paired with the CSV whose name shares its stem, else the first CSV."""
     from assistant.fileio import cache_dir, read_cache, write_cache
 
-    xmls, csvs = _corpus_files(corpus_paths)
+    xmls, csvs = corpus_files(corpus_paths)
     digest = hashlib.sha256(f"generation-v{MODEL_VERSION}".encode())
     for p in xmls + csvs:
         digest.update(p.name.encode())

@@ -11,32 +11,19 @@ from __future__ import annotations
 
 import math
 
-import networkx as nx
 import numpy as np
 
+from assistant.generation.entry import entry_heading, room_path
 from assistant.generation.types import ContentNode
 
-__all__ = ["STRAIGHT_RAD", "room_path", "route_nodes"]
+__all__ = ["STRAIGHT_RAD", "route_nodes"]
 
 #: a support within this angle of the walking direction is "straight ahead" (radians)
 STRAIGHT_RAD = math.radians(30)
 
 
-def room_path(floorplan, pose, room: str) -> list[str] | None:
-    """Rooms from the one holding ``pose`` to ``room`` (both included), or None."""
-    here = floorplan.room_at(pose.x, pose.y)
-    if here is None:
-        return None
-    try:
-        return nx.shortest_path(floorplan.room_graph(), here.name, room)  # fewest rooms, as a person counts
-    except nx.NetworkXNoPath:
-        return None
-
-
 def route_nodes(floorplan, listener_pose, support, room: str) -> list[ContentNode]:
     """The how-to-find steps to ``support`` (an entity) in ``room`` from ``listener_pose``."""
-    from assistant.generation.content import entry_heading
-
     r = floorplan.room(room)
     inside = r.contains(listener_pose.x, listener_pose.y)
     nodes: list[ContentNode] = []

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from assistant.errors import AssistantError
+from assistant.viz.colours import to_rgb
 
-__all__ = ["HIT_COLOURS", "depth_frame_points"]
+__all__ = ["HIT_COLOURS", "cloud_arrays", "depth_frame_points"]
 
 #: Colours (0–1) of simulated hits by kind, for ``colour_by="hit"``.
 HIT_COLOURS = {
@@ -67,3 +68,39 @@ def depth_frame_points(frame, stride: int = 2, max_range_m: float = 6.0,
 
         colours = colormaps["viridis"](np.clip(points[:, 2] / 2.0, 0.0, 1.0))[:, :3]
     return points, colours.reshape(-1, 3)
+
+
+def cloud_arrays(points_xyz, colors=None, max_points: int = 150_000) -> tuple[np.ndarray, np.ndarray]:
+    """``(points (N, 3), colours (N, 3) floats in 0–1)`` ready to draw, from user input.
+
+    ``colors``: None (one default colour), one colour (see :mod:`assistant.viz.colours`), or
+    per point (N, 3) floats in 0–1 or uint8 0–255. Points that are not finite are dropped;
+    beyond ``max_points`` an evenly spaced subset is kept. Bad shapes or ranges raise
+    :class:`~assistant.errors.AssistantError` saying what to give instead.
+    """
+    pts = np.asarray(points_xyz, dtype=float)
+    if pts.ndim != 2 or pts.shape[1] != 3:
+        raise AssistantError(f"points must be an (N, 3) array of x, y, z; got shape {pts.shape}")
+    keep = np.isfinite(pts).all(axis=1)
+    per_point = colors is not None and np.ndim(colors) == 2
+    if per_point:
+        cols = np.asarray(colors)
+        if cols.shape != pts.shape:
+            raise AssistantError(f"{len(pts)} points but colours of shape {cols.shape}; give "
+                                 "one (r, g, b) row per point")
+        if np.issubdtype(cols.dtype, np.integer):
+            cols = cols.astype(float) / 255.0  # 0–255 per channel
+        cols = cols.astype(float)
+        if len(cols) and not (np.nanmin(cols) >= 0.0 and np.nanmax(cols) <= 1.0):
+            raise AssistantError("per-point colours must be floats in 0–1 or integers in "
+                                 "0–255")
+        cols = cols[keep]
+    pts = pts[keep]
+    if len(pts) > max_points:
+        index = np.linspace(0, len(pts) - 1, max_points).round().astype(int)
+        pts = pts[index]
+        if per_point:
+            cols = cols[index]
+    if not per_point:
+        cols = np.tile(to_rgb("cyan" if colors is None else colors), (len(pts), 1))
+    return pts, cols

@@ -39,10 +39,10 @@ import numpy as np
 
 from assistant.errors import AssistantError, UnknownNameError
 from assistant.fileio import atomic_write_text
-from assistant.geometry import Pose2D, box_polygon, rectangle
+from assistant.geometry import box_polygon, rectangle
 from assistant.viz import shapes
-from assistant.viz.clouds import depth_frame_points
-from assistant.viz.colours import room_colour, score_colours, to_hex_int, to_rgb
+from assistant.viz.clouds import cloud_arrays, depth_frame_points
+from assistant.viz.colours import room_colour, score_colours, to_hex_int
 from assistant.viz.html import scene_html
 from assistant.viz.labels import label_object
 from assistant.viz.server import MeshcatServer, RecordingWindow
@@ -67,27 +67,6 @@ def path_name(name: str) -> str:
 def _lambert(colour, opacity: float = 1.0, vertex_colours: bool = False) -> mg.MeshLambertMaterial:
     return mg.MeshLambertMaterial(color=0xFFFFFF if vertex_colours else to_hex_int(colour),
                                   opacity=opacity, vertexColors=vertex_colours)
-
-
-def _as_pose(pose) -> Pose2D:
-    if isinstance(pose, Pose2D):
-        return pose
-    values = tuple(float(v) for v in np.asarray(pose, dtype=float).reshape(-1))
-    if len(values) != 3:
-        raise AssistantError(f"a pose is (x, y, heading), got {values}")
-    return Pose2D(*values)
-
-
-def _poses_array(poses) -> np.ndarray:
-    if isinstance(poses, np.ndarray):
-        arr = np.asarray(poses, dtype=float)
-    else:
-        arr = np.array([_as_pose(p).as_tuple() for p in poses], dtype=float)
-    if arr.size == 0:
-        return np.zeros((0, 3))
-    if arr.ndim != 2 or arr.shape[1] != 3:
-        raise AssistantError(f"poses must be (N, 3) rows of x, y, heading; got shape {arr.shape}")
-    return arr
 
 
 class SceneView:
@@ -287,7 +266,7 @@ class SceneView:
     def draw_robot(self, pose, name: str = "robot", colour="#d9482b") -> None:
         """Draw (or move) a robot: a 0.25 m-radius body, a cone along its heading and a mast
         up to the camera height (1.05 m). ``pose`` is a Pose2D or ``(x, y, heading)``."""
-        pose = _as_pose(pose)
+        pose = shapes.as_pose(pose)
         group = self._vis["robots"][path_name(name)]
         path = group.path.lower()
         if not self.has(path):
@@ -318,31 +297,7 @@ class SceneView:
         or per point (N, 3) floats in 0–1 or uint8 0–255. Points that are not finite are
         dropped; beyond ``max_points`` an evenly spaced subset is drawn.
         """
-        pts = np.asarray(points_xyz, dtype=float)
-        if pts.ndim != 2 or pts.shape[1] != 3:
-            raise AssistantError(f"points must be an (N, 3) array of x, y, z; got shape {pts.shape}")
-        keep = np.isfinite(pts).all(axis=1)
-        per_point = colors is not None and np.ndim(colors) == 2
-        if per_point:
-            cols = np.asarray(colors)
-            if cols.shape != pts.shape:
-                raise AssistantError(f"{len(pts)} points but colours of shape {cols.shape}; give "
-                                     "one (r, g, b) row per point")
-            if np.issubdtype(cols.dtype, np.integer):
-                cols = cols.astype(float) / 255.0  # 0–255 per channel
-            cols = cols.astype(float)
-            if len(cols) and not (np.nanmin(cols) >= 0.0 and np.nanmax(cols) <= 1.0):
-                raise AssistantError("per-point colours must be floats in 0–1 or integers in "
-                                     "0–255")
-            cols = cols[keep]
-        pts = pts[keep]
-        if len(pts) > max_points:
-            index = np.linspace(0, len(pts) - 1, max_points).round().astype(int)
-            pts = pts[index]
-            if per_point:
-                cols = cols[index]
-        if not per_point:
-            cols = np.tile(to_rgb("cyan" if colors is None else colors), (len(pts), 1))
+        pts, cols = cloud_arrays(points_xyz, colors, max_points)
         cloud = mg.PointCloud(pts.T.astype(np.float32), cols.T.astype(np.float32), size=size_m)
         target = self._vis["points"][path_name(name)]
         target.set_object(cloud)
@@ -389,7 +344,7 @@ class SceneView:
         Figure 5.13. Each arrow starts at its pose and points along its heading; scores are
         divided by their maximum (eq. 5-13), and an arrow runs from red and ``min_length_m``
         (score 0) to green and ``max_length_m`` (the best)."""
-        poses_arr = _poses_array(poses)
+        poses_arr = shapes.poses_array(poses)
         values = np.asarray(scores, dtype=float).reshape(-1)
         if len(values) != len(poses_arr):
             raise AssistantError(f"{len(poses_arr)} poses but {len(values)} scores; give one "
@@ -475,15 +430,8 @@ class SceneView:
         group.delete()
         group["box"].set_object(mg.TriangularMeshGeometry(vertices, faces),
                                 _lambert(color, opacity=opacity))
-        corners, _ = shapes.triangulate_polygon(polygon)
-        n = len(corners)
-        edges = []
-        for i in range(n):
-            j = (i + 1) % n
-            edges += [(*corners[i], z0), (*corners[j], z0), (*corners[i], z1), (*corners[j], z1),
-                      (*corners[i], z0), (*corners[i], z1)]
         group["outline"].set_object(mg.LineSegments(
-            mg.PointsGeometry(np.asarray(edges, dtype=np.float32).T),
+            mg.PointsGeometry(shapes.prism_outline(polygon, z0, z1).T),
             mg.LineBasicMaterial(color=to_hex_int(color))))
         self._remember(key, group.path.lower())
 

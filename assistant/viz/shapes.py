@@ -10,9 +10,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from assistant.errors import AssistantError
+from assistant.geometry import Pose2D
+
 __all__ = [
-    "arrows_mesh", "cells_mesh", "mesh_arrays", "polygon_area", "ribbon_mesh", "slab_mesh",
-    "triangulate_polygon",
+    "arrows_mesh", "as_pose", "cells_mesh", "mesh_arrays", "polygon_area", "poses_array",
+    "prism_outline", "ribbon_mesh", "slab_mesh", "triangulate_polygon",
 ]
 
 
@@ -165,3 +168,38 @@ def mesh_arrays(mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
     colours = np.asarray(mesh.vertex_colors, dtype=float) if mesh.has_vertex_colors() else None
     return vertices, faces, colours
 
+
+def as_pose(pose) -> Pose2D:
+    """A :class:`Pose2D` from a pose or any (x, y, heading) sequence."""
+    if isinstance(pose, Pose2D):
+        return pose
+    values = tuple(float(v) for v in np.asarray(pose, dtype=float).reshape(-1))
+    if len(values) != 3:
+        raise AssistantError(f"a pose is (x, y, heading), got {values}")
+    return Pose2D(*values)
+
+
+def poses_array(poses) -> np.ndarray:
+    """(N, 3) rows of x, y, heading from an array or a sequence of poses."""
+    if isinstance(poses, np.ndarray):
+        arr = np.asarray(poses, dtype=float)
+    else:
+        arr = np.array([as_pose(p).as_tuple() for p in poses], dtype=float)
+    if arr.size == 0:
+        return np.zeros((0, 3))
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise AssistantError(f"poses must be (N, 3) rows of x, y, heading; got shape {arr.shape}")
+    return arr
+
+
+def prism_outline(polygon_xy, z0: float, z1: float) -> np.ndarray:
+    """(M, 3) float32 end points of the line segments outlining a vertical prism over
+    ``polygon_xy`` from ``z0`` to ``z1`` (bottom, top and vertical edges)."""
+    corners, _ = triangulate_polygon(polygon_xy)
+    n = len(corners)
+    edges = []
+    for i in range(n):
+        j = (i + 1) % n
+        edges += [(*corners[i], z0), (*corners[j], z0), (*corners[i], z1), (*corners[j], z1),
+                  (*corners[i], z0), (*corners[i], z1)]
+    return np.asarray(edges, dtype=np.float32)

@@ -282,7 +282,7 @@ def parse_world(text: str, source: str = "<world>") -> World:
             objects.append(PlacedObject(o["name"], o["on"], float(o["x"]), float(o["y"])))
         scenes[str(scene_name)] = Scene(str(scene_name), tuple(furniture), tuple(objects))
 
-    return World(
+    world = World(
         name=data["name"],
         title=data.get("title", ""),
         floorplan=Floorplan(tuple(rooms), tuple(walls), tuple(doors)),
@@ -291,6 +291,15 @@ def parse_world(text: str, source: str = "<world>") -> World:
         scenes=scenes,
         source=source,
     )
+    # stage 4: sizes and places (a house, not just valid YAML)
+    from assistant.world.sanity import geometry_problems
+
+    problems = geometry_problems(world)
+    if problems:
+        where, problem = problems[0]
+        more = f" (and {len(problems) - 1} more problem{'s' * (len(problems) > 2)})" if len(problems) > 1 else ""
+        check.fail(where, problem + more)
+    return world
 
 
 # --- writing -------------------------------------------------------------------------------

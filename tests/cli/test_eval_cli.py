@@ -30,3 +30,15 @@ def test_an_evaluation_not_built_says_so(monkeypatch, capsys):
     monkeypatch.setitem(eval_cli.EVALUATIONS, "dialogue", "assistant.no_such_package.evaluation")
     assert main(["eval", "dialogue"]) == 2
     assert "not built yet" in capsys.readouterr().err
+
+
+def test_progress_goes_to_stderr_and_is_quiet_with_json(capsys):
+    import argparse
+
+    from assistant.cli.common import progress_for
+
+    progress_for(argparse.Namespace(json=False))("fetch trials", 2, 8)
+    progress_for(argparse.Namespace(json=False))("training")
+    progress_for(argparse.Namespace(json=True))("fetch trials", 3, 8)
+    captured = capsys.readouterr()
+    assert captured.out == "" and captured.err == "fetch trials (2/8)\ntraining\n"

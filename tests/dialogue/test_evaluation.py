@@ -33,9 +33,18 @@ def test_check_reports_each_problem():
 
 
 def test_eval_module_contract():
-    from assistant.eval import dialogue as evaluation
+    from assistant.cli import eval_dialogue
 
     parser = argparse.ArgumentParser()
-    evaluation.add_arguments(parser)
+    eval_dialogue.add_arguments(parser)
     args = parser.parse_args(["--only", "greet"])
-    assert args.perception == "oracle" and callable(evaluation.run)
+    assert args.perception == "oracle" and callable(eval_dialogue.run)
+
+
+def test_topics_count_conversations_and_those_as_expected():
+    from assistant.eval.dialogue import by_topic
+
+    records = [{"covers": ["where", "fetch"], "ok": True}, {"covers": ["where"], "ok": False},
+               {"covers": [], "ok": False}]
+    assert by_topic(records) == {"fetch": {"conversations": 1, "as_expected": 1},
+                                 "where": {"conversations": 2, "as_expected": 1}}

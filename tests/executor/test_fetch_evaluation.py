@@ -60,7 +60,25 @@ def test_summary_counts_outcomes_per_home_scene_and_mode():
 
 
 def test_arguments():
+    from assistant.cli import eval_fetch
+
     parser = argparse.ArgumentParser()
-    evaluation.add_arguments(parser)
+    eval_fetch.add_arguments(parser)
     args = parser.parse_args(["--perception", "oracle", "--limit", "3", "--world", "apartment"])
     assert (args.perception, args.limit, args.world) == ("oracle", 3, "apartment")
+
+
+def test_select_keeps_one_home_and_scene_then_the_first_n():
+    records = [{"world": w, "scene": s, "n": i} for i, (w, s) in enumerate(
+        [("apartment", "original"), ("hk-studio", "original"), ("apartment", "modified"),
+         ("apartment", "original"), ("apartment", "original")])]
+    assert [r["n"] for r in evaluation.select(records, "apartment", "original", 2)] == [0, 3]
+    assert [r["n"] for r in evaluation.select(records, scene="modified")] == [2]
+    assert evaluation.select(records, limit=-1) == []
+
+
+def test_an_unwritable_trials_file_is_one_line(tmp_path, capsys):
+    from assistant.cli import main
+
+    assert main(["eval", "fetch", "--trials", str(tmp_path / "no" / "such" / "t.jsonl")]) == 2
+    assert "cannot write the trials file" in capsys.readouterr().err

@@ -126,7 +126,7 @@ def test_the_uniqueness_term_prefers_selections_that_rule_out_look_alikes(genera
 def test_an_open_plan_room_is_entered_the_way_the_listener_walks_in(all_worlds):
     import math
 
-    from assistant.generation.content import entry_heading
+    from assistant.generation.entry import entry_heading
 
     world = all_worlds["two-bedrooms-house"]
     # from the start (the hallway, north) the way into the living room is through the meeting

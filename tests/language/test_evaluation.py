@@ -38,3 +38,15 @@ def test_a_missing_test_file_is_reported_before_training(tiny_corpus, capsys):
     assert main(["eval", "tagging", "--corpus", str(tiny_corpus), "--test", "/no/such/file.xml",
                  "--folds", "0"]) == 2
     assert "no such corpus file: /no/such/file.xml" in capsys.readouterr().err
+
+
+def test_the_evaluation_returns_its_report_and_prints_nothing(tiny_corpus, capsys):
+    from assistant.eval.tagging import evaluate_tagging
+
+    heard = []
+    report = evaluate_tagging([tiny_corpus], [], folds=2,
+                              progress=lambda what, done=None, total=None: heard.append((what, done, total)))
+    assert capsys.readouterr().out == ""
+    assert list(report["results"]) == ["cross_validation"]
+    assert report["results"]["cross_validation"]["folds"] == 2
+    assert ("cross-validation folds", 1, 2) in heard  # the second fold was announced

@@ -52,16 +52,10 @@ def test_escape_aborts_without_saving(tmp_path, capsys):
 
 
 def test_eval_policy_one_rdt(capsys):
-    import argparse
+    from assistant.cli import main
 
-    from assistant.eval import policy as evaluation
-
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--json", action="store_true")
-    evaluation.add_arguments(parser)
-    args = parser.parse_args(["--layout", "training-home:modified", "--rdt", "move-front-non",
-                              "--trials", "2", "--json"])
-    assert evaluation.run(args) == 0
+    assert main(["eval", "policy", "--layout", "training-home:modified", "--rdt", "move-front-non",
+                 "--trials", "2", "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     (row,) = result["rows"]
     assert row["rdt"] == "move-front-non" and len(row["trials"]) == 2 and row["T_total"] is None

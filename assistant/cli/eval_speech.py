@@ -1,0 +1,56 @@
+"""``assistant eval speech``: options and printed tables of :mod:`assistant.eval.speech`."""
+
+from __future__ import annotations
+
+import argparse
+
+from assistant.cli.common import emit_json, percent, print_table, progress_for
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--asr", choices=("pocketsphinx", "vosk"), default="pocketsphinx",
+                        help="recogniser to measure (default pocketsphinx)")
+    parser.add_argument("--asr-model", metavar="DIR", help="the vosk model folder (with --asr vosk)")
+    parser.add_argument("--quick", action="store_true",
+                        help="4 sentences of each kind (36 utterances with the noise levels): a smoke test")
+    parser.add_argument("--all-voices", action="store_true",
+                        help="every sentence in every voice and rate (8x longer); default: in rotation")
+    parser.add_argument("--kind", action="append", choices=("command", "where", "chat"),
+                        help="only these kinds of sentence (repeatable)")
+    parser.add_argument("--clean-only", action="store_true", help="no noisy copies")
+    parser.add_argument("--no-open", action="store_true", help="pocketsphinx: no general-English fallback")
+    parser.add_argument("--rows", action="store_true", help="print every utterance")
+
+
+def run(args: argparse.Namespace) -> int:
+    from assistant.eval.speech import evaluate_speech
+
+    if args.asr_model and args.asr != "vosk":
+        from assistant.errors import AssistantError
+
+        raise AssistantError("--asr-model is the folder of a vosk model: add --asr vosk")
+    report = evaluate_speech(args.asr, args.asr_model, quick=args.quick, all_voices=args.all_voices,
+                             kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
+                             open_fallback=not args.no_open, progress=progress_for(args))
+    if args.json:
+        emit_json(report)
+        return 0
+    if args.rows:
+        print_table([[r["id"], r["errors"], r["confidence"], r["plan_equal"], r["reference"], r["transcript"]]
+                     for r in report["rows"]], ["utterance", "err", "conf", "plan=", "said", "heard"])
+        print()
+    header = ["", "utterances", "WER", "plan = text", "intent = text", "would confirm", "median decode s", "RTF"]
+
+    def line(name, s):
+        return [name, s["utterances"], percent(s["wer"]), percent(s["plan_equal"]), percent(s["intent_equal"]),
+                percent(s["would_confirm"]), s["median_decode_s"], s["real_time_factor"]]
+
+    for factor, groups in report["groups"].items():
+        print_table([line(value, s) for value, s in groups.items()], [factor, *header[1:]])
+        print()
+    print_table([line(k, s) for k, s in report["noise_and_kind"].items()], ["noise / kind", *header[1:]])
+    s = report["summary"]
+    print(f"\n{report['engine']}: {s['utterances']} utterances, WER {percent(s['wer'])}, plan = typed plan "
+          f"{percent(s['plan_equal'])} of {s['planned']}, RTF {s['real_time_factor']}, open model used "
+          f"{s['open_used']}x; {report['wall_seconds']} s")
+    return 0

@@ -1,0 +1,121 @@
+"""The pocketsphinx recogniser (the default engine: its wheel ships an en-US model).
+
+Two searches over the same acoustic model:
+
+* **home** — the home's trigram language model and its small dictionary
+  (:mod:`~assistant.dialogue.speech.language_model`), tried first;
+* **open** — pocketsphinx's general US English model (72 000 words), loaded in the background
+  and tried when the home search is unsure (confidence below ``open_below``): "where is my
+  wallet" must come through even when the home model does not hold the words. The open result
+  is kept when it is more confident.
+
+Dither is on (synthetic and digitally silent audio otherwise upsets the feature extraction),
+with a fixed seed so the same audio always gives the same words. The confidence of an
+utterance is the mean posterior probability of its words (pocketsphinx's lattice posteriors).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+
+import numpy as np
+
+from assistant.dialogue.speech.audio import to_pcm16
+from assistant.dialogue.speech.errors import RecogniserError, require
+from assistant.dialogue.speech.recogniser import Recognition, Recogniser
+
+#: decoder settings (language weights measured on the speech test set: docs/speech.md)
+DECODER_SETTINGS = {"dither": True, "seed": 1, "lw": 9.0, "fwdflatlw": 9.0, "bestpathlw": 9.0,
+                    "loglevel": "FATAL"}
+FILLERS = frozenset({"<s>", "</s>", "<sil>", "[noise]", "<unk>"})
+FRAME_S = 0.01
+
+
+class PocketsphinxRecogniser(Recogniser):
+    """``model``: a :class:`~assistant.dialogue.speech.language_model.HomeModel` (default: built
+    from the corpus and the homes, cached); ``world``: add that world's words; ``open_fallback``:
+    use the general model when unsure; ``open_below``: the confidence under which it is tried;
+    ``open_margin``: how much more confident its words must be to be taken.
+    """
+
+    name = "pocketsphinx"
+
+    def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.3,
+                 open_margin: float = 0.3, settings: dict | None = None, asr_model=None):
+        if asr_model is not None:
+            raise RecogniserError("pocketsphinx uses its packaged en-US model; --asr-model is for --asr vosk")
+        ps = require("pocketsphinx", "pip install pocketsphinx", RecogniserError)
+        from assistant.dialogue.speech.language_model import build_home_model
+
+        self.model = model or build_home_model(world=world)
+        self.settings = {**DECODER_SETTINGS, **(settings or {})}
+        try:
+            self._home = ps.Decoder(lm=str(self.model.lm), dict=str(self.model.dictionary), **self.settings)
+        except (RuntimeError, ValueError) as error:
+            raise RecogniserError(f"pocketsphinx cannot load the home model {self.model.lm} ({error}); "
+                                  "delete it to rebuild it") from None
+        self.open_fallback = open_fallback
+        self.open_below = open_below
+        self.open_margin = open_margin
+        self._open = None
+        self._open_lock = threading.Lock()
+        self._open_error: str | None = None
+        if open_fallback:
+            threading.Thread(target=self._load_open, name="pocketsphinx-open-model", daemon=True).start()
+
+    # ------------------------------------------------------------------ models
+    def _load_open(self):
+        with self._open_lock:
+            if self._open is None and self._open_error is None:
+                import pocketsphinx as ps
+
+                try:
+                    self._open = ps.Decoder(**self.settings)
+                except (RuntimeError, ValueError) as error:  # the packaged model is damaged
+                    self._open_error = str(error)
+            return self._open
+
+    def describe(self) -> dict:
+        return {"engine": self.name, "home_lm": str(self.model.lm), "home_words": self.model.words,
+                "open_fallback": self.open_fallback, "open_below": self.open_below,
+                "settings": {k: v for k, v in self.settings.items() if k != "loglevel"}}
+
+    # ------------------------------------------------------------------ decoding
+    def recognise(self, samples: np.ndarray) -> Recognition:
+        samples = np.asarray(samples, dtype=np.float32)
+        audio_s = len(samples) / float(self.sample_rate_hz)
+        start = time.perf_counter()
+        pcm = to_pcm16(samples)
+        words = _decode(self._home, pcm)
+        search = "home"
+        if self.open_fallback and _confidence(words) < self.open_below:
+            open_decoder = self._load_open()
+            if open_decoder is not None:
+                other = _decode(open_decoder, pcm)
+                if other and (not words or _confidence(other) > _confidence(words) + self.open_margin):
+                    words, search = other, "open"
+        transcript = " ".join(w for w, *_ in words)
+        return Recognition(transcript, _confidence(words), audio_s, time.perf_counter() - start, self.name,
+                           search, words)
+
+
+def _decode(decoder, pcm: bytes) -> list[tuple[str, float, float, float]]:
+    """(word, start s, end s, posterior) of the best hypothesis, fillers left out."""
+    decoder.start_utt()
+    decoder.process_raw(pcm, full_utt=True)
+    decoder.end_utt()
+    if decoder.hyp() is None:
+        return []
+    out = []
+    for seg in decoder.seg():
+        word = seg.word.split("(", 1)[0]  # "the(2)": an alternative pronunciation
+        if word in FILLERS or word.startswith("+"):
+            continue
+        out.append((word, seg.start_frame * FRAME_S, (seg.end_frame + 1) * FRAME_S,
+                    float(min(1.0, max(0.0, seg.prob)))))
+    return out
+
+
+def _confidence(words) -> float:
+    return float(np.mean([c for *_, c in words])) if words else 0.0

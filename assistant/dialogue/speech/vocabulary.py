@@ -1,0 +1,178 @@
+"""What the robot expects to hear: sentences and words for the recogniser's language model.
+
+The text comes from three places, so that the recogniser knows the home and the way people
+talk about it:
+
+* the annotated corpus (``corpus/descriptions.xml``: how people describe where things are);
+* the homes: the room names, furniture words and models, and the objects of every packaged
+  world (and of the world in use), put into command templates ("where is my mug", "bring me
+  the laptop from the bedroom", "the fork is on the table in front of the couch");
+* the dialogue's control phrases (stop, cancel, repeat that, yes, no …) and everyday
+  household objects (wallet, keys, phone …) so "where is my wallet" is heard as said, even
+  though the robot does not know that object (it then says so).
+
+Test sentences (the fetch dev set, the dialogue scripts) are **not** in the text: the speech
+evaluation measures recognition on sentences the model has not seen. Their words are not
+added either. Words the recogniser's dictionary lacks are dropped (and counted).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+#: everyday things people lose at home (the open part of "where is my X")
+HOUSEHOLD_OBJECTS = (
+    "wallet", "keys", "key", "phone", "glasses", "remote", "remote control", "book", "bag", "purse",
+    "umbrella", "hat", "coat", "jacket", "shoes", "slippers", "watch", "ring", "pen", "pencil",
+    "notebook", "tablet", "charger", "headphones", "cup", "glass", "plate", "bowl", "spoon", "knife",
+    "bottle", "medicine", "pills", "newspaper", "magazine", "letter", "scissors", "tape", "blanket",
+    "pillow", "towel", "toy", "ball", "camera", "lamp", "clock", "vase", "box", "basket", "hairbrush",
+    "comb", "gloves", "scarf", "backpack", "passport", "ticket", "card", "money", "coins", "sweater",
+    "teddy bear", "hearing aid", "walking stick", "cane", "keyboard", "mouse", "speaker", "radio",
+)
+
+#: how many times more often the home's objects appear in the templates than everyday objects
+KNOWN_WEIGHT = 5
+
+#: what people say to the dialogue outside commands (see :mod:`assistant.dialogue.intents`)
+CONTROL_PHRASES = (
+    "stop", "stop now", "stop it", "please stop", "halt", "wait", "hold on", "cancel", "never mind",
+    "forget it", "abort", "repeat that", "say that again", "what did you say", "pardon", "help",
+    "help me", "what can you do", "what can i say", "which home am i in", "where am i",
+    "which rooms are there", "start over", "start again", "reset", "yes", "yes please", "yeah",
+    "sure", "okay", "ok", "go ahead", "do it", "please do", "correct", "right", "no", "no thanks",
+    "no thank you", "nope", "not now", "thank you", "thanks", "hello", "hi", "hello robot",
+    "good morning", "good job", "well done", "let me show you", "let me show you what in front of the couch means",
+    "watch me", "the one with the chairs", "the first one", "the second one", "the third one",
+    "the other one", "the big one", "the small one", "the one by the bed", "the one next to the couch",
+)
+
+#: command templates over an object ({o}), a room ({r}) and a furniture word ({f})
+OBJECT_TEMPLATES = (
+    "where is my {o}", "where is the {o}", "where's my {o}", "have you seen my {o}",
+    "where did i leave my {o}", "where did i put the {o}", "do you know where my {o} is",
+    "how do i get to my {o}", "how do i find the {o}", "find my {o}", "bring me my {o}",
+    "bring me the {o}", "get me the {o}", "can you get my {o}", "fetch the {o}",
+)
+PLACE_TEMPLATES = (
+    "go to the {r}", "go into the {r}", "enter the {r}", "head into the {r}", "walk into the {r}",
+    "bring me the {o} from the {r}", "the {o} is in the {r}", "the {o} is on the {f} in the {r}",
+    "go to the {r} the {o} is on the {f}", "my {o} is on the {f} in front of the couch",
+    "the {o} is on the {f} next to the bed", "the {o} is on the {f} between the chairs",
+    "the {o} is on the {f} to the left of the {f}", "the {o} is on the {f} to the right of the {f}",
+    "the {o} is on the {f} behind the couch", "the {o} is on the {f} beside the chair",
+)
+
+
+@dataclass(frozen=True)
+class SpeechVocabulary:
+    """The language-model text: ``sentences`` (one utterance each, lower case, words separated
+    by single spaces) and ``phrases`` (the short phrase list a grammar-based engine takes)."""
+
+    sentences: tuple[str, ...]
+    phrases: tuple[str, ...]
+
+    @property
+    def words(self) -> list[str]:
+        return sorted({w for s in self.sentences for w in s.split()})
+
+    @property
+    def key(self) -> str:
+        """A hash of the text: caches built from it are rebuilt when it changes."""
+        digest = hashlib.sha1("\n".join(self.sentences).encode("utf-8"))
+        return digest.hexdigest()[:16]
+
+    def restricted(self, known) -> tuple["SpeechVocabulary", list[str]]:
+        """Only sentences whose words all satisfy ``known(word)``; and the words left out."""
+        missing = sorted({w for s in self.sentences for w in s.split() if not known(w)})
+        bad = set(missing)
+        keep = tuple(s for s in self.sentences if not (set(s.split()) & bad))
+        phrases = tuple(p for p in self.phrases if not (set(p.split()) & bad))
+        return SpeechVocabulary(keep, phrases), missing
+
+
+def spoken_form(tokens) -> str:
+    """Corpus tokens → the words a speaker says: clitics joined ("you 'll" → "you'll"), the
+    corpus's split words joined ("gon na" → "gonna"), punctuation dropped, lower case."""
+    out: list[str] = []
+    for token in tokens:
+        t = token.lower()
+        if (t.startswith("'") or t == "n't") and out:
+            out[-1] += t
+        elif t == "na" and out and out[-1] in ("gon", "wan"):
+            out[-1] += t
+        else:
+            out.append(t)
+    text = " ".join(out)
+    return normalise_transcript(text)
+
+
+def normalise_transcript(text: str) -> str:
+    """Lower case, punctuation other than in-word apostrophes removed, single spaces: the form
+    word error is counted on."""
+    text = text.lower().replace("’", "'")
+    text = re.sub(r"[^a-z0-9' ]+", " ", text)
+    text = re.sub(r"(?<![a-z])'|'(?![a-z])", " ", text)
+    return " ".join(text.split())
+
+
+def home_words(world=None) -> dict[str, list[str]]:
+    """Rooms, furniture words and objects of the packaged homes (and of ``world``)."""
+    from assistant.generation import known_objects
+    from assistant.world import load_world
+    from assistant.world.catalogue import load_catalogue
+    from assistant.world.worldfile import world_names
+
+    worlds = [load_world(name) for name in world_names()]
+    if world is not None:
+        worlds.append(world)
+    rooms = sorted({r for w in worlds for r in w.floorplan.room_names})
+    catalogue = load_catalogue()
+    furniture = {"table", "chair", "couch", "sofa", "bed", "desk", "nightstand", "dresser", "shelf"}
+    furniture.update(catalogue.category_words.values())
+    furniture.update(m.name for m in catalogue.models.values())
+    objects = sorted(set(known_objects(world)) | set(catalogue.objects))
+    return {"rooms": rooms, "furniture": sorted(furniture), "objects": objects}
+
+
+def corpus_sentences(paths=None) -> list[str]:
+    """The annotated corpus's descriptions in spoken form (default: the repository's corpus)."""
+    from assistant.language.corpus import read_corpora
+
+    if paths is None:
+        from assistant.language.corpus import repo_root
+
+        paths = [Path(repo_root()) / "corpus" / "descriptions.xml"]
+    result = read_corpora(paths)
+    return [s for s in (spoken_form(word for word, _ in d.tagged_words()) for d in result.descriptions) if s]
+
+
+def template_sentences(words: dict[str, list[str]]) -> list[str]:
+    """The command templates filled with the home's words and the household objects."""
+    known = words["objects"]
+    others = [o for o in HOUSEHOLD_OBJECTS if o not in known]
+    # the home's objects weigh KNOWN_WEIGHT times an everyday object: heard as themselves first
+    out = [t.format(o=o) for o in known for t in OBJECT_TEMPLATES] * KNOWN_WEIGHT
+    out += [t.format(o=o) for o in others for t in OBJECT_TEMPLATES]
+    for i, r in enumerate(words["rooms"]):
+        for j, t in enumerate(PLACE_TEMPLATES):
+            # a fixed rotation over objects and furniture keeps the text small and deterministic
+            o = known[(i + j) % len(known)]
+            for k, f in enumerate(words["furniture"]):
+                if "{f}" in t or k == 0:
+                    out.append(t.format(o=known[(i + j + k) % len(known)] if "{f}" in t else o, r=r, f=f))
+    return [normalise_transcript(s) for s in out]
+
+
+def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
+    """The sentences and phrases the recogniser's model is built from (see the module doc)."""
+    words = home_words(world)
+    sentences = corpus_sentences(corpus_paths) + template_sentences(words)
+    sentences += [normalise_transcript(p) for p in CONTROL_PHRASES]
+    phrases = [normalise_transcript(p) for p in CONTROL_PHRASES]
+    phrases += [normalise_transcript(t.format(o=o)) for o in words["objects"] for t in OBJECT_TEMPLATES[:4]]
+    phrases += words["rooms"] + words["furniture"]
+    return SpeechVocabulary(tuple(sentences), tuple(dict.fromkeys(phrases)))

@@ -1,0 +1,133 @@
+"""``assistant eval speech``: recognition on the speech test set, and what it does to the plans.
+
+For every utterance of :mod:`assistant.eval.speech_data` (our sentences spoken by espeak-ng, clean
+and in household noise) the recogniser's words are compared with the typed sentence:
+
+* **word error rate** — (substitutions + deletions + insertions) / reference words, over the
+  normalised words (lower case, no punctuation);
+* **plan equal** — for commands and where-questions, whether the parse of the heard words gives
+  the same plan (room, RDT nodes, object, support furniture) as the parse of the typed text
+  (:class:`~assistant.grounding.CommandParser` in the utterance's home);
+* **intent equal** — for every utterance, whether the dialogue routes the heard words to the same
+  intent as the typed ones (:func:`~assistant.dialogue.classify`);
+* **timing** — decoding seconds and the real-time factor (decode time / audio length);
+* **would confirm** — the share below the chat's "Did you say …?" threshold.
+
+Rows come back per utterance; the summary groups them by engine, noise level, voice, rate and
+kind. Nothing is printed here (``assistant/cli/eval_speech.py`` prints).
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from collections import defaultdict
+
+from assistant.eval.progress import Progress, no_progress
+
+PLAN_KEYS = ("room", "nodes", "object", "support")
+
+
+def word_errors(reference: str, hypothesis: str) -> int:
+    """Word-level edit distance (substitutions, deletions, insertions)."""
+    from rapidfuzz.distance import Levenshtein
+
+    return int(Levenshtein.distance(reference.split(), hypothesis.split()))
+
+
+def plan_of(parser, text: str) -> dict:
+    plan = parser.parse(text).to_dict()["plan"]
+    return {k: plan.get(k) for k in PLAN_KEYS}
+
+
+class _Parsers:
+    """One command parser per home, trained once (the language and grounding models are shared)."""
+
+    def __init__(self):
+        self._by_world: dict = {}
+        self._base = None
+
+    def __call__(self, world_name: str):
+        if world_name not in self._by_world:
+            from assistant.grounding import CommandParser
+            from assistant.world import load_world
+
+            if self._base is None:
+                self._base = CommandParser.load(None)
+            self._by_world[world_name] = CommandParser(self._base.language, self._base.grounder,
+                                                       load_world(world_name))
+        return self._by_world[world_name]
+
+
+def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = False, all_voices: bool = False,
+                    kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
+                    progress: Progress = no_progress) -> dict:
+    """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor)."""
+    from assistant.dialogue import classify
+    from assistant.dialogue.speech.listener import DEFAULT_CONFIRM_BELOW
+    from assistant.dialogue.speech.recogniser import make_recogniser
+    from assistant.eval import speech_data
+
+    wall = time.perf_counter()
+    options = {"asr_model": asr_model} if asr_model else {"open_fallback": open_fallback}
+    progress(f"loading the {engine} recogniser")
+    recogniser = make_recogniser(engine, **options)
+    if engine == "pocketsphinx" and open_fallback:
+        recogniser.recognise(speech_data.synthesise("hello", "en-us", 175))  # the open model is loaded
+    parsers = _Parsers()
+    threshold = DEFAULT_CONFIRM_BELOW if confirm_below is None else confirm_below
+    todo = speech_data.items(quick, all_voices, speech_data.SNRS_DB if snrs_db is None else snrs_db, kinds)
+    rows = []
+    for n, item in enumerate(todo, start=1):
+        progress("speech test set", n, len(todo))
+        audio = speech_data.audio_of(item)
+        heard = recogniser.recognise(audio)
+        ref = item.reference
+        row = {"id": item.id, "kind": item.kind, "world": item.world, "voice": item.voice, "rate": item.rate,
+               "noise": item.noise, "engine": engine, "reference": ref, "transcript": heard.transcript,
+               "words": len(ref.split()), "errors": word_errors(ref, heard.transcript),
+               "confidence": round(heard.confidence, 3), "search": heard.search,
+               "audio_s": round(heard.audio_s, 3), "decode_s": round(heard.decode_s, 4),
+               "intent_equal": classify(heard.transcript).name == classify(item.text).name,
+               "plan_equal": None, "would_confirm": heard.confidence < threshold}
+        if item.kind in ("command", "where"):
+            parser = parsers(item.world)
+            row["plan_equal"] = plan_of(parser, heard.transcript) == plan_of(parser, item.text)
+        rows.append(row)
+    groups = {factor: {value: summarise(rs) for value, rs in sorted(_group(rows, factor).items())}
+              for factor in ("noise", "voice", "rate", "kind")}
+    by_noise_kind = {f"{noise} / {kind}": summarise(rs) for (noise, kind), rs in sorted(_group2(rows).items())}
+    return {"engine": engine, "recogniser": recogniser.describe(), "quick": quick, "all_voices": all_voices,
+            "utterances": len(rows), "summary": summarise(rows), "groups": groups, "noise_and_kind": by_noise_kind,
+            "confirm_below": threshold, "wall_seconds": round(time.perf_counter() - wall, 1), "rows": rows}
+
+
+def summarise(rows: list[dict]) -> dict:
+    """WER, plan and intent agreement, timing and confirmation share of some rows."""
+    words = sum(r["words"] for r in rows)
+    planned = [r["plan_equal"] for r in rows if r["plan_equal"] is not None]
+    audio = sum(r["audio_s"] for r in rows)
+    decode = [r["decode_s"] for r in rows]
+    return {"utterances": len(rows), "words": words,
+            "wer": round(sum(r["errors"] for r in rows) / words, 4) if words else None,
+            "sentence_correct": round(sum(r["errors"] == 0 for r in rows) / len(rows), 4) if rows else None,
+            "plan_equal": round(sum(planned) / len(planned), 4) if planned else None, "planned": len(planned),
+            "intent_equal": round(sum(r["intent_equal"] for r in rows) / len(rows), 4) if rows else None,
+            "would_confirm": round(sum(r["would_confirm"] for r in rows) / len(rows), 4) if rows else None,
+            "open_used": sum(r["search"] == "open" for r in rows),
+            "median_decode_s": round(statistics.median(decode), 3) if decode else None,
+            "real_time_factor": round(sum(decode) / audio, 3) if audio else None}
+
+
+def _group(rows, factor):
+    out = defaultdict(list)
+    for r in rows:
+        out[str(r[factor])].append(r)
+    return out
+
+
+def _group2(rows):
+    out = defaultdict(list)
+    for r in rows:
+        out[(r["noise"], r["kind"])].append(r)
+    return out
