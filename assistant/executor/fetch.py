@@ -183,7 +183,7 @@ class FetchTask:
             # carried out from where the robot is (issue 16): the room it is in, or the one it
             # faces through the nearest opening; "on your left" is said from the start pose
             self._said_from = self.ctx.pose()
-            if plan.nodes and plan.nodes[0].dynamic:
+            if plan.nodes and all(n.dynamic for n in plan.nodes):  # only moves: from here
                 room = room_of(self.ctx.world, self.ctx.pose())
             else:
                 room = room_from_here(self.ctx.world, self.ctx.pose(), plan)
