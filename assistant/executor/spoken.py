@@ -64,22 +64,7 @@ def room_from_here(world, pose: Pose2D, plan) -> str | None:
         return here.name
     if here is None:
         return None
-    graph = floor.room_graph()
-    options = []
-    for other in graph.neighbors(here.name):
-        door = graph.edges[here.name, other]["door"]
-        dx, dy = door.centre[0] - pose.x, door.centre[1] - pose.y
-        bearing = wrap_angle(math.atan2(dy, dx) - pose.theta)
-        if side == "left":
-            wrong_side = bearing <= 0.0
-        elif side == "right":
-            wrong_side = bearing >= 0.0
-        else:
-            wrong_side = False
-        options.append((wrong_side, abs(bearing) + 0.1 * math.hypot(dx, dy), other))
-    if not options:
-        return here.name
-    return min(options)[2]
+    return floor.room_faced(pose, side) or floor.room_faced(pose) or here.name
 
 
 def amount_goal(pose: Pose2D, direction: str, distance_m: float | None, degrees: float | None) -> Pose2D:
