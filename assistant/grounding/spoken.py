@@ -13,7 +13,8 @@ decide it (each rule is one family of real phrasing, not one sentence):
   never a room;
 * **rooms** — a room phrase that names no room and no side ("walk straight into", "as soon as
   you get into") after a room was already named repeats nothing;
-* **furniture** — a target phrase that names no furniture ("on it") has no target;
+* **furniture** — a target phrase that names no furniture ("on it") keeps the learned target
+  (our corpus labels it ``table``, as the templates do; one real file labels it N/A);
 * **whose side** — a side said of the room ("the right end of the room") is the room's, a side
   said of the listener ("on your right", "ahead to your left") the robot's;
 * **motion** — "stop" is a ``stop`` node; "halfway" is the centre of the room; "the other /
@@ -55,6 +56,8 @@ BESIDE_WORDS = frozenset({"with", "by", "next", "beside", "near", "nearby", "alo
 PASSING_WORDS = frozenset({"pass", "past", "passing", "beyond", "passed"})
 FAR_WORDS = frozenset({"other", "far", "opposite", "farthest", "furthest"})
 END_WORDS = frozenset({"side", "end", "wall"})
+#: words after "right" that make it an intensifier ("right next to", "right there")
+INTENSIFIED = frozenset({"next", "there", "here", "by", "beside", "in", "on", "behind", "at", "near"})
 #: sides said in a landmark reference ("to the left of the lamp")
 LANDMARK_SIDES = {"left": "left", "right": "right", "behind": "back", "front": "front",
                   "between": "between", "beside": "beside"}
@@ -81,17 +84,9 @@ def spoken_groundings(records: Sequence[ChunkRecord], groundings: Sequence[Chunk
         if g.room is not None and label in ROOM_LABELS and room_said and not _names_room_or_side(record):
             g = replace(g, room=None)
         g = _motion_rules(label, words, g)
-        if g.target is not None and label == "FURTP" and not _names_furniture(record):
-            g = replace(g, target=None)
         room_said = room_said or g.room is not None
         out.append(g)
     return out
-
-
-def _names_furniture(record: ChunkRecord) -> bool:
-    canon, tags = canonical_tokens(record.words, record.pos)
-    return any(w in FURNITURE_WORDS or t == "FUR" for w, t in zip(canon, tags)) \
-        or not (set(canon) & POINTERS)
 
 
 def _names_room_or_side(record: ChunkRecord) -> bool:
@@ -108,7 +103,8 @@ def _object_rules(record: ChunkRecord, label: str, words: list[str], g: ChunkGro
         found = object_phrase(record.words, record.pos)
         if found is None:
             return ChunkGrounding() if label == "OBRP" else g
-        direction = next((LANDMARK_SIDES[w] for w in words if w in LANDMARK_SIDES), None)
+        direction = next((LANDMARK_SIDES[w] for i, w in enumerate(words) if w in LANDMARK_SIDES
+                          and not (w in SIDES and i + 1 < len(words) and words[i + 1] in INTENSIFIED)), None)
         if direction is None and (set(words) & BESIDE_WORDS or g.direction is None):
             direction = "beside"
         return ChunkGrounding(reference=found.kind, direction=direction or g.direction)

@@ -104,9 +104,9 @@ def test_motion_families():
         ChunkGrounding(reference="couch", direction="back")
 
 
-def test_target_phrase_on_it_has_no_target():
-    assert ground("FURTP", "ON on PRP it", ChunkGrounding(target="table")) == ChunkGrounding()
-    assert ground("FURTP", "ON on DT the FUR counter", ChunkGrounding(target="table")).target == "table"
+def test_right_next_to_is_beside():
+    assert ground("OBRP", "RB right RB next TO to DT the JJ yellow NN book", ChunkGrounding()) == \
+        ChunkGrounding(reference="book", direction="beside")
 
 
 def test_amounts_of_steps_and_turns():

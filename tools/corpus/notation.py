@@ -211,6 +211,8 @@ def ground_irmrp(words: list[Word]) -> tuple[str, str]:
     if d:
         if low & _MOTION_VERBS and not low & {"on", "to", "at"}:
             return "move", d
+        if "room" in low and not low & {"you", "your", "his", "brian"}:
+            return "room", d  # "on the right side of the room": the room's side, not the listener's
         return "robot", d
     if "behind" in low:
         return "robot", "back"
