@@ -160,9 +160,14 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
 
     loose: list = []  # the words of a run outside every chunk (top level only)
 
+    room_said = [False]  # a room chunk has been visited (moves said before it are its route)
+    route: list[_NodeBuilder] = []
+
     def flush_loose() -> None:
         for pair, _ in loose_moves([t.text for t in loose]):
             builders.append(_NodeBuilder(NO_TARGET, [pair]))
+            if not room_said[0]:
+                route.append(builders[-1])
         loose.clear()
 
     def visit(items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
@@ -174,6 +179,7 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
             if parent_key == 0:
                 flush_loose()
             g = by_id.get(id(item), ChunkGrounding())
+            room_said[0] = room_said[0] or bool(g.room)
             if g.target:
                 own = [t.text for t in item.own_tokens]
                 node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
@@ -216,6 +222,11 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
 
     visit(tree.items, None, 0)
     flush_loose()
+    if plan.room is not None:  # "go forward and turn into the room on the right": the way to the room
+        builders = [b for b in builders if not any(b is r for r in route)]
+    for b in builders:  # "… the statue, that's the statue": the object is no landmark of itself
+        if b.target != NO_TARGET:
+            b.pairs = [p for p in b.pairs if p[0] != plan.object]
     plan.nodes = [b.build() for b in builders]
     dynamic = [n.dynamic for n in plan.nodes]
     plan.kind = ("dynamic" if all(dynamic) else "static" if not any(dynamic) else "mixed") if plan.nodes else "static"

@@ -139,7 +139,8 @@ def unknown_room_named(words: Sequence[str], world) -> str | None:
 
 
 #: words of a room phrase that say the robot goes in ("the room on your right", "the door on the left")
-ENTERING = frozenset({"room", "door", "doorway", "entrance", "opening", "into", "enter", "entryway"})
+ENTERING = frozenset({"room", "door", "doorway", "entrance", "opening", "into", "enter", "entryway",
+                      "doors", "openings", "in"})
 #: words said before that take the robot elsewhere first ("the end of the hallway", "the second room")
 ELSEWHERE = frozenset({"end", "down", "through", "past", "second", "third", "last", "far", "beyond", "across"})
 #: listener sides
