@@ -30,11 +30,11 @@ from assistant.grounding.objects import is_object_word, object_phrases, said_obj
 from assistant.grounding.spoken import PASSING_WORDS
 from assistant.grounding.types import ChunkGrounding, GroundingPlan, RDTNode
 from assistant.grounding.vocabulary import (
+    DESCRIPTORS,
     DYNAMIC_REFERENCES,
     FILLERS,
     FURNITURE_WORDS,
     NO_TARGET,
-    DESCRIPTORS,
     canonical_tokens,
     said_descriptors,
 )
@@ -244,8 +244,9 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
 def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[str] = (),
                  corrections: dict[str, str] | None = None, plan: GroundingPlan | None = None) -> list[str]:
     """Words the plan could not use: unknown to the grounder (or the tagger) or outside every
-    chunk, fillers excepted; a typo the tagger corrected counts as its correction. Returned as
-    said, in order."""
+    chunk, fillers excepted; a typo the tagger corrected counts as its correction. A descriptor
+    inside a chunk ("dinner" in "the dinner table") is used: the plan's node keeps it to choose
+    among several tables. Returned as said, in order."""
     unknown_set = {u.lower() for u in unknown}
     corrections = corrections or {}
     labels = tree.nested_labels()
@@ -257,8 +258,8 @@ def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[
         word = canon[0] if canon else ""
         if not word or word in FILLERS or not any(ch.isalnum() for ch in word) or i in used:
             continue
-        if label != "O" and is_amount_word(word):
-            continue  # a count, unit or angle of a move
+        if label != "O" and (is_amount_word(word) or token.text.lower() in DESCRIPTORS):
+            continue  # a count, unit or angle of a move; a descriptor the node keeps
         if label == "O" or token.text.lower() in unknown_set or (word not in vocabulary
                                                                     and word not in FURNITURE_WORDS):
             out.append(token.text)
