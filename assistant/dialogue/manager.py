@@ -30,7 +30,11 @@ from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, Turn
 from assistant.dialogue.turns import join_words as _join
+from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
+from assistant.grounding.objects import is_object_word, object_phrase
+from assistant.grounding.rooms import unknown_room_named
+from assistant.grounding.vocabulary import FURNITURE_WORDS, STRUCTURE_REFERENCES
 
 class DialogueManager:
     """Conversation state for one person and one home.
@@ -183,10 +187,13 @@ class DialogueManager:
                 return k, None
         if plan_object:
             return plan_object, None
-        m = re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+(?: [a-z]+)?)$", norm) or \
-            re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+)\b", norm)
+        m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
+            re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
         if m:
-            noun = re.sub(r"\b(is|are|now|please|again|then|gone)\b", "", m.group(1)).strip()
+            noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on)\b", "", m.group(1)).strip()
+            found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
+            if found is not None:  # any thing can be asked about (issue 16)
+                return found.kind, None
             return None, noun or None
         return None, None
 
@@ -220,8 +227,11 @@ class DialogueManager:
         if self.services.search_mode == "sensed":
             return self._search(text, intent.name, obj, style, start)
         result = self._describe(obj, style)
-        if not result.found:
-            return self._turn(text, intent.name, result.description, "describe", "answered", start,
+        if not result.found:  # nothing of the kind on the map: say so, and offer to look
+            self.pending = {"kind": "confirm", "search": obj, "object": obj}
+            where = "they are" if it_them(obj) == "them" else "it is"
+            reply = f"I haven't seen your {obj}, and I don't know where {where}. Shall I look for {it_them(obj)}?"
+            return self._turn(text, intent.name, reply, "answer", "answered", start,
                               object=obj, source="simulator", found=False)
         description = result.description
         place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", description.rstrip("."), flags=re.I)
@@ -241,7 +251,7 @@ class DialogueManager:
         if self.busy:
             return self._turn(said, intent_name, "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
-        reply = lead or f"I haven't seen your {obj} yet — I'll go and look for it."
+        reply = lead or f"I haven't seen your {obj} yet — I'll go and look for {it_them(obj)}."
         return self._start_job("search", said, reply, obj, None, obj, start, intent_name=intent_name,
                                style=style, source="search", object=obj)
 
@@ -301,6 +311,9 @@ class DialogueManager:
         unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in _POLITE]
         tags = dict(zip(parsed.analysis.tokens, parsed.analysis.pos))
         nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))]
+        # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
+        nouns += [r for n in plan.nodes for r, _ in n.pairs if r not in FURNITURE_WORDS.values()
+                  and r not in STRUCTURE_REFERENCES and not is_object_word(r) and r not in nouns]
         if plan.room is None:  # the parser missed a room the words name ("go to the bedroom")
             named = [r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text.lower())]
             if len(named) == 1:
@@ -312,6 +325,12 @@ class DialogueManager:
         # the object named in the words when the plan lost it ("get the mug from the table")
         obj = plan.object or (self._object_in(" ".join(str(t).lower() for t in parsed.analysis.tokens))[0]
                               if plan.nodes or plan.room or mentions else None)
+        missing = unknown_room_named([str(t).lower() for t in parsed.analysis.tokens], self.world) \
+            if plan.room is None else None
+        if missing is not None:  # "go to the kitchen" in a home with none
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(said, "command", f"There is no {missing} here; the rooms are {rooms}.", "answer",
+                              "not_understood", start, unknown_room=missing)
         has_plan = bool(plan.nodes or plan.room or plan.object or (mentions and obj))
         if not has_plan:
             if unused:
@@ -404,6 +423,9 @@ class DialogueManager:
     def _resolve(self, text: str, intent, start: float) -> Turn | None:
         p = self.pending
         norm = intent.text
+        if intent.name in NEW_REQUESTS:  # a new request replaces the question (issue 16)
+            self.pending = None
+            return None
         if p["kind"] == "confirm":
             self.pending = None
             if intent.name == "yes" and p.get("search"):
@@ -429,6 +451,7 @@ class DialogueManager:
                 self.pending = None
                 return self._turn(text, "no", f"OK — then I can't use '{word}'. Could you say it another way?",
                                   "none", "not_understood", start)
+            self.pending = None  # anything else is a new request
             return None
         if p["kind"] == "room":
             room = next((r for r in self.rooms if r in norm), None)
@@ -438,10 +461,14 @@ class DialogueManager:
             if room is not None:
                 self.pending = None
                 return self._command(f"{p['text']} in the {room}", start, original=text)
-            if intent.name in ("command",) and len(norm.split()) > 4:
-                self.pending = None
-                return None  # a new command
             rooms = _join(["the " + r for r in self.rooms], "or")
+            missing = unknown_room_named(norm.split(), self.world)
+            if missing is not None:
+                return self._turn(text, "answer", f"There is no {missing} here; the rooms are {rooms}. "
+                                  "Which one should I look in?", "clarify", "asked", start, unknown_room=missing)
+            if intent.name == "command" and self._is_request(text):
+                self.pending = None
+                return None  # a new command replaces the question
             return self._turn(text, "answer", f"Sorry, which room — {rooms}?", "clarify", "asked", start)
         if p["kind"] == "which":
             index = self._choose(norm, text, p)
@@ -452,12 +479,18 @@ class DialogueManager:
                 turn = self._command(command, start, force=True, original=text)
                 turn.data["chosen"] = option["id"]
                 return turn
-            if intent.name == "command" and len(norm.split()) > 5:
+            if intent.name == "command" and (len(norm.split()) > 5 or self._is_request(text)):
                 self.pending = None
                 return None
             return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]
                               + " (You can also say \"the first\" or \"never mind\".)", "clarify", "asked", start)
         return None
+
+    def _is_request(self, text: str) -> bool:
+        """Whether an answer to a question is rather a new request: it names an object, a place
+        or a move of its own ("bring me the mug", "go to the kitchen")."""
+        plan = self.services.parser(self.world).parse(text).plan
+        return bool(plan.object or plan.nodes or unknown_room_named(text.lower().split(), self.world))
 
     def _choose(self, norm: str, text: str, p: dict) -> int | None:
         return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)
@@ -477,7 +510,11 @@ class DialogueManager:
         self.worker.start(kind, text, task_room, task_object, style)
         return turn
 
+#: intents that are always a new request, whatever question is pending
+NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home"})
+
 _POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
            "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
 
 _VAGUE = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}
+

@@ -37,7 +37,7 @@ def search_reply(ctx: ReplyContext, name: str, result, summary: dict, start: flo
             "search_seconds": round(float(getattr(searched, "wall_seconds", 0.0) or 0.0), 2)}
     description = result.message
     if result.success:
-        reply = f"Found it: {description[0].lower() + description[1:]}"
+        reply = f"Found {it_them(name)}: {description[0].lower() + description[1:]}"
         return Turn(name, "where", reply, "search", "success", data, time.perf_counter() - start)
     if result.status is Status.TIMEOUT:
         where = join_words(["the " + r for r in rooms]) if rooms else "nowhere"
@@ -89,7 +89,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
                                  item.word if item else None, phrase, source="fetch")
         moved = obj in summary["moved"] or (
             before is not None and place is None and before.furniture != (item.id if item else None))
-        reply = f"Here it is: I can see your {obj} {where}." + (
+        reply = f"Here {'they are' if it_them(obj) == 'them' else 'it is'}: I can see your {obj} {where}." + (
             " It wasn't where I saw it last; I've updated my memory." if moved else "")
         data["remembered"] = True
         return Turn(text, "command", reply, "fetch", "success", data, time.perf_counter() - start), pending
@@ -105,7 +105,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             here += " It isn't where I saw it last, so I've forgotten that place."
         if ctx.services.search_mode == "sensed":
             pending = {"kind": "confirm", "search": obj, "object": obj}
-            here += " Shall I look for it?"
+            here += f" Shall I look for {it_them(obj)}?"
         return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start), pending
     if item is not None:
         where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
@@ -141,3 +141,10 @@ class SeenFurniture:
     id: str
     word: str
     room: str | None
+
+
+def it_them(obj: str) -> str:
+    """"them" for the keys, "it" for the wallet or the mail (the generation layer's grammar)."""
+    from assistant.generation import it_them as pronoun
+
+    return pronoun(obj)
