@@ -7,16 +7,20 @@ PY := $(VENV)/bin/python
 SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libfreenect-dev libfreenect-bin chromium
 STAMP := $(VENV)/.installed
 
-.PHONY: run test notebook setup system-packages bench clean
+.PHONY: run test notebook setup warm-up system-packages bench clean
 
-run: setup
+# warm-up trains (or loads) every model the chat uses, with progress, so its first reply is quick
+run: setup warm-up
 	$(VENV)/bin/assistant chat --world apartment
+
+warm-up: setup
+	$(VENV)/bin/assistant warm-up --world apartment
 
 test: setup
 	$(PY) -m pytest -q
 
 # JupyterLab on the notebooks, listening on 127.0.0.1 only; it prints the URL with its token.
-notebook: setup
+notebook: setup warm-up
 	$(VENV)/bin/jupyter lab --no-browser --ip=127.0.0.1 --ServerApp.root_dir=notebooks
 
 bench: setup
