@@ -19,9 +19,11 @@ warm-up: setup
 test: setup
 	$(PY) -m pytest -q
 
-# JupyterLab on the notebooks, listening on 127.0.0.1 only; it prints the URL with its token.
+# JupyterLab on the notebooks, listening on 127.0.0.1 only; it prints the URL with its token
+# (as root, e.g. in a container, JupyterLab needs --allow-root).
 notebook: setup warm-up
-	$(VENV)/bin/jupyter lab --no-browser --ip=127.0.0.1 --ServerApp.root_dir=notebooks
+	$(VENV)/bin/jupyter lab --no-browser --ip=127.0.0.1 --ServerApp.root_dir=notebooks \
+	  $$( [ "$$(id -u)" = 0 ] && echo --allow-root )
 
 bench: setup
 	$(PY) benchmarks/run_all.py
