@@ -19,6 +19,17 @@ NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 needs_browser = pytest.mark.skipif(BROWSER is None, reason="no headless Chromium (apt-get install chromium)")
 
 
+@pytest.fixture(scope="module")
+def warm_cache():
+    """Train (or load) the models the notebooks use into this test session's cache, here in the
+    test process, as `make notebook` does with `assistant warm-up`: a kernel inherits
+    ASSISTANT_CACHE and then only loads them (training inside a kernel outlasts a cell's
+    timeout on a loaded machine)."""
+    from assistant.cli import main
+
+    assert main(["warm-up", "--world", "apartment"]) == 0
+
+
 def execute(name: str, tmp_path: Path):
     """Run notebook ``name`` in a fresh kernel from notebooks/ with ASSISTANT_NOTEBOOK_FAST=1;
     files the notebook writes to the temporary folder land in ``tmp_path``."""
@@ -60,14 +71,16 @@ def test_notebooks_are_committed_without_outputs():
 @pytest.mark.slow
 @pytest.mark.parametrize("name", [p.name for p in NOTEBOOKS if p.name not in
                                   ("explore_world.ipynb", "follow_a_command.ipynb")])
-def test_notebook_runs(name, tmp_path):
+@pytest.mark.timeout(900)
+def test_notebook_runs(name, tmp_path, warm_cache):
     out = stdout_of(execute(name, tmp_path))
     assert "Traceback" not in out
 
 
 @pytest.mark.slow
 @needs_browser
-def test_follow_a_command_runs_and_its_scene_renders(tmp_path):
+@pytest.mark.timeout(900)
+def test_follow_a_command_runs_and_its_scene_renders(tmp_path, warm_cache):
     from assistant.world import load_world
 
     out = stdout_of(execute("follow_a_command.ipynb", tmp_path))
@@ -80,7 +93,8 @@ def test_follow_a_command_runs_and_its_scene_renders(tmp_path):
 
 @pytest.mark.slow
 @needs_browser
-def test_explore_world_runs_and_its_scene_renders(tmp_path):
+@pytest.mark.timeout(900)
+def test_explore_world_runs_and_its_scene_renders(tmp_path, warm_cache):
     from assistant.world import load_world
 
     execute("explore_world.ipynb", tmp_path)
