@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, percent, print_table, progress_for
+from assistant.cli.common import percent, print_table, progress_for, show_report
 from assistant.eval.grounding import DISSERTATION, FIELD_ROWS, GROUNDER_NAMES
 
 
@@ -33,11 +33,7 @@ def run(args: argparse.Namespace) -> int:
     result = evaluate_grounding(args.corpus, args.test, args.test_world, rounds=args.rounds,
                                 seed=args.seed, grounders=args.grounder, plans=args.plans,
                                 errors=args.errors, progress=progress_for(args))
-    if args.json:
-        emit_json(result)
-    else:
-        print_report(result)
-    return 0
+    return show_report(args, result, print_report)
 
 
 def _pct(value) -> str:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, finite_float, print_table, progress_for
+from assistant.cli.common import finite_float, print_table, progress_for, show_report
 from assistant.eval.perception import CATEGORY_ORDER, DEFAULT_CLASSIFIERS
 
 
@@ -34,11 +34,7 @@ def run(args: argparse.Namespace) -> int:
         classifiers=[m.strip() for m in args.classifiers.split(",") if m.strip()],
         train_plans=args.train_plans, range_m=args.range_m, coverage=not args.no_coverage,
         progress=progress_for(args))
-    if args.json:
-        emit_json(report)
-    else:
-        print_report(report)
-    return 0
+    return show_report(args, report, print_report)
 
 
 def realdata_summary_line(summary: dict) -> str:
