@@ -22,12 +22,16 @@ needs_browser = pytest.mark.skipif(BROWSER is None, reason="no headless Chromium
 @pytest.fixture(scope="module")
 def warm_cache():
     """Train (or load) the models the notebooks use into this test session's cache, here in the
-    test process, as `make notebook` does with `assistant warm-up`: a kernel inherits
+    test process, as `make notebook` does with `assistant warm-up`, through the application layer: a kernel inherits
     ASSISTANT_CACHE and then only loads them (training inside a kernel outlasts a cell's
     timeout on a loaded machine)."""
-    from assistant.cli import main
+    from assistant.app import Fetcher, Finder
+    from assistant.world import load_world
 
-    assert main(["warm-up", "--world", "apartment"]) == 0
+    world, fetcher = load_world("apartment"), Fetcher()
+    fetcher.parser(world)
+    assert fetcher.policies.models and fetcher.detector is not None
+    assert Finder().describer is not None
 
 
 def execute(name: str, tmp_path: Path):
