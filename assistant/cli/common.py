@@ -36,8 +36,16 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
-#: longest command text accepted, in characters (a spoken command has a few hundred)
-MAX_COMMAND_CHARS = 2000
+def show_report(args, report, print_report) -> int:
+    """The end of every ``assistant eval NAME``: the report as one JSON line with ``--json``,
+    else ``print_report(report)``'s tables; exit status 0."""
+    if getattr(args, "json", False):
+        emit_json(report)
+    else:
+        print_report(report)
+    return 0
+
+
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
 
@@ -65,7 +73,10 @@ def parse_request(line: str) -> dict:
 
 
 def check_command_text(text) -> str:
-    """The command text, refused when empty or longer than :data:`MAX_COMMAND_CHARS`."""
+    """The command text, refused when empty or longer than the parser takes
+    (:data:`assistant.grounding.parser.MAX_CHARS`)."""
+    from assistant.grounding.parser import MAX_CHARS as MAX_COMMAND_CHARS
+
     if not isinstance(text, str):
         raise AssistantError(f"the command must be text, got {type(text).__name__}")
     if not text.strip():
@@ -241,26 +252,37 @@ def miss_probability(text: str) -> float:
     return value
 
 
+def robot_spec(text: str) -> str:
+    """Check a robot spec for argparse (``sim``, ``sim:WORLD[:SCENE]``, ``replay:PATH``,
+    ``p3dx:PORT``): an unknown kind is refused with the kinds the factory knows."""
+    from assistant.robot import parse_robot_spec
+
+    try:
+        return str(parse_robot_spec(text))
+    except AssistantError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+def add_robot_option(parser: argparse.ArgumentParser, default: str = "sim", help_: str | None = None) -> None:
+    """``--robot SPEC``: any spec :func:`~assistant.robot.make_robot` knows, checked when parsed."""
+    from assistant.robot import robot_schemes
+
+    parser.add_argument("--robot", type=robot_spec, default=default, metavar="SPEC",
+                        help=help_ or f"which robot acts: {', '.join(robot_schemes())} — sim (default; "
+                                      "sim:WORLD[:SCENE] names the home), replay:PATH, p3dx:PORT")
+
+
 def add_json_flag(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
-def stderr_progress(what: str, done: int | None = None, total: int | None = None) -> None:
-    """A progress hook (:class:`assistant.eval.progress.Progress`) that writes one line per call
-    to stderr: ``what``, then ``done/total`` when the stage is counted."""
-    count = "" if done is None else f" ({done}/{total})" if total is not None else f" ({done})"
-    sys.stderr.write(f"{what}{count}\n")
-    sys.stderr.flush()
-
-
-def quiet_progress(what: str, done: int | None = None, total: int | None = None) -> None:
-    """A progress hook that says nothing (``--json`` runs)."""
-
-
 def progress_for(args: argparse.Namespace):
-    """The progress hook of one command: quiet with ``--json`` (its stdout is read by programs
-    and its stderr often shown beside it), one line per step on stderr otherwise."""
-    return quiet_progress if getattr(args, "json", False) else stderr_progress
+    """The progress hook of one command (:class:`assistant.eval.progress.Progress`): quiet with
+    ``--json`` (its stdout is read by programs and its stderr often shown beside it); a tqdm bar
+    per stage on a terminal; one line per step on stderr otherwise (a log)."""
+    from assistant.progress import for_terminal
+
+    return for_terminal(bool(getattr(args, "json", False)))
 
 
 def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:

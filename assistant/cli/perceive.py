@@ -63,9 +63,11 @@ def register(subparsers) -> None:
 def run(args: argparse.Namespace) -> int:
     from assistant.errors import AssistantError
 
-    detector = _detector(args)
+    import functools
+
+    detector = functools.cache(lambda: _detector(args))  # built when a request first needs it
     if args.replay:
-        return _run_replay(detector, args)
+        return _run_replay(detector(), args)
     if args.batch:
         return run_batch(args.batch, lambda req: _handle(detector, _request(req)), json_requests=True)
     if bool(args.world) == bool(args.depth):
@@ -163,7 +165,7 @@ def _handle(detector, req: dict) -> dict:
         check_pose_in_map(world, Pose2D(*req["pose"]))
         renderer = DepthRenderer(world, req.get("scene", "original"))
         frame = renderer.render(Pose2D(*req["pose"]))
-        result = detector.analyse(frame)
+        result = detector().analyse(frame)
         out = {"world": world.name, "scene": renderer.scene, "pose": list(req["pose"])}
     elif req.get("depth"):
         if req.get("intrinsics") is None or req.get("depth_scale") is None:
@@ -172,7 +174,7 @@ def _handle(detector, req: dict) -> dict:
 
         frame, has_mount = load_depth_png(req["depth"], tuple(req["intrinsics"]), float(req["depth_scale"]),
                                           camera_height_m=req.get("camera_height"), tilt_deg=req.get("tilt"))
-        result = detector.analyse(frame, use_mount=has_mount)
+        result = detector().analyse(frame, use_mount=has_mount)
         out = {"depth": str(req["depth"])}
     else:
         raise AssistantError("a request needs either world and pose, or depth, intrinsics and depth_scale")

@@ -9,9 +9,11 @@ import sys
 import threading
 from pathlib import Path
 
-from assistant.dialogue.manager import DialogueManager, Turn
+from assistant.dialogue.manager import DialogueManager
+from assistant.dialogue.turns import Turn
 from assistant.dialogue.memory import ObjectMemory, default_data_dir
 from assistant.dialogue.services import Services
+from assistant.errors import AssistantError
 from assistant.fileio import PRIVATE_FILE_MODE, atomic_write_text, private_dir
 
 PROMPT = "you> "
@@ -34,7 +36,7 @@ class ChatSession:
         self.transcript_path = Path(args.transcripts or data / "transcripts") / f"{stamp}.json"
         self.history_path = data / "chat_history"
         self.services = Services(perception=args.perception, seed=args.seed,
-                                 search=getattr(args, "search", "sensed"))
+                                 search=getattr(args, "search", "sensed"), robot=getattr(args, "robot", "sim"))
         self.view = None
         self._print_lock = threading.RLock()
         self._interrupts = 0
@@ -162,6 +164,12 @@ class ChatSession:
         return line.rstrip("\n")
 
     def loop(self) -> int:
+        # the parser is loaded before the greeting (every reply needs it; from the cache it takes
+        # about a second), the rest in the background: the first reply does not wait for it
+        try:
+            self.services.parser(self.world)
+        except AssistantError as error:  # said again when the parser is used
+            self._print(f"(language models: {error})")
         self.services.warm_up(self.world, background=True, scene=self.scene)
         readline = self._setup_readline()
         self._say(self.manager.greeting(), label="")

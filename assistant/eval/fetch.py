@@ -2,8 +2,8 @@
 Table 5-4).
 
 Every command of ``corpus/fetch_dev.jsonl`` ({text, world, scene, object, kind}) is run in the
-simulator from the world's start pose with sensed and/or oracle perception, through the
-application layer's fetch (:meth:`assistant.app.Fetcher.fetch`); a trial succeeds when the target object
+simulator from the world's start pose with sensed and/or oracle perception
+(:meth:`assistant.app.Fetcher.fetch`, the product's own fetch); a trial succeeds when the target object
 covers at least 50 pixels of the final depth frame at a median distance of at most 4.5 m. The
 report gives the success rate and the failure counts per home and scene (Table 5-4's rows:
 not visible, parse, perception = reference not found, collision, ambiguous, no path, no room,
@@ -99,9 +99,9 @@ def evaluate_fetch(dev_set=None, *, perception: str = "both", world: str | None 
     for mode in modes:
         for number, record in enumerate(records):
             progress(f"{mode} fetch trials", number, len(records))
-            result = fetcher.fetch(record["text"], record["world"], record["scene"], mode, seed=seed,
-                                   object_name=record["object"])
-            data = {**result.data, "kind": record["kind"]}
+            outcome = fetcher.fetch(record["text"], record["world"], record["scene"], mode, seed=seed,
+                                    object_name=record["object"])
+            data = {**outcome.data, "kind": record["kind"]}
             trials.append(data)
             if on_trial is not None:
                 on_trial(data)

@@ -18,7 +18,7 @@ detector), and the description is composed from the environment model that searc
     ``unique``: the stated room and relations hold for no other furniture with the support's
     word. ``recovered``: the parse found every relation the generator meant to say.
 (b) **listener** — each description is handed to the simulated robot as a fetch command
-    (the application layer's fetch, from the world's start pose, with sensed perception by
+    (the application layer's :meth:`~assistant.app.Fetcher.fetch`, ``assistant fetch``'s, from the world's start pose, with sensed perception by
     default, ``--listener-perception oracle`` to separate language from perception errors) and
     counts when the object ends up in the final camera view. ``--no-listener`` skips it.
 (c) **brevity and fluency** — word count, repeated phrases, and agreement with the corpus's
@@ -147,21 +147,23 @@ def _bleu2(words: list[str], references: list[list[str]]) -> float | None:
 # ------------------------------------------------------------------------------ run
 @dataclass
 class _Tools:
-    """What every case of one evaluation uses: the application layer's "where is"
-    (:class:`~assistant.app.Finder`, with the evaluation's describer), the parser (``None``:
-    check the generator's own nodes), the corpus's human descriptions and the listener's fetch
-    (:class:`~assistant.app.Fetcher`, ``None`` without the listener test)."""
+    """What every case of one evaluation uses: the describer, the parser (``None``: check the
+    generator's own nodes), the corpus's human descriptions, the listener's fetcher (the
+    application layer's fetch use case, ``None`` without the listener), the "where is" use case
+    (search, then describe) and the furniture detector of the searches (``None`` when not
+    needed)."""
 
-    finder: object
+    describer: object
     parser: object
     parser_note: str | None
     humans: dict
-    fetcher: object
+    runner: object
     listener_note: str
+    furniture_detector: object
+    finder: object = None
 
 
 def _tools(corpus_paths, parse: bool, listener: bool, search: str, policies: bool) -> _Tools:
-    from assistant.app import Fetcher, Finder
     from assistant.generation import Describer, load_generation_model
 
     describer = Describer(load_generation_model(corpus_paths), policies="default" if policies else None)
@@ -174,14 +176,20 @@ def _tools(corpus_paths, parse: bool, listener: bool, search: str, policies: boo
         except (ImportError, AttributeError) as error:  # the language layer is not usable
             parser_note = f"parser unavailable ({error}); checked the generator's own nodes"
     humans = _human_descriptions(corpus_paths)
+    runner = None
+    listener_note = "not measured (--no-listener)"
     furniture_detector = None
     if listener or search == "sensed":
         from assistant.perception import FurnitureDetector
 
         furniture_detector = FurnitureDetector()
-    fetcher = Fetcher(parser=parser, detector=furniture_detector) if listener else None
-    return _Tools(Finder(describer=describer, furniture_detector=furniture_detector), parser,
-                  parser_note, humans, fetcher, "not measured (--no-listener)")
+    from assistant.app import Fetcher, Finder
+
+    if listener:
+        runner = Fetcher(parser=parser, detector=furniture_detector) if parser is not None \
+            else Fetcher(detector=furniture_detector)
+    return _Tools(describer, parser, parser_note, humans, runner, listener_note, furniture_detector,
+                  Finder(describer, furniture_detector))
 
 
 def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
@@ -204,8 +212,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
         if search == "sensed":
             found = (searches or {}).get((case.world_name, case.scene, case.obj.name))
             if found is None:
-                found = tools.finder.search(case.obj.name, case.world, case.scene,
-                                            perception="sensed", miss_rate=miss_rate)
+                found = tools.finder.search(case.obj.name, case.world, case.scene, miss_rate=miss_rate)
             done[(case.world_name, case.scene, case.obj.name)] = found
         row = score_case(case, found, tools, listener_perception)
         rows.append(row)
@@ -293,17 +300,17 @@ def _singles_out(result, rdts, case, support, room, said_room, listener_pose) ->
         for e in same)
 
 
-def _listen(fetcher, result, case, listener_perception: str) -> dict | None:
+def _listen(runner, result, case, listener_perception: str) -> dict | None:
     """(b): the description handed to the simulated robot as a fetch command."""
     from assistant.errors import AssistantError
 
-    if fetcher is None:
+    if runner is None:
         return None
     if not result.found:
         return {"success": False, "failure": "not found by the search"}
     try:
-        outcome = fetcher.fetch(result.description, case.world_name, case.scene, listener_perception,
-                                object_name=case.obj.name)
+        outcome = runner.fetch(result.description, case.world_name, case.scene, listener_perception,
+                               object_name=case.obj.name)
         return {"success": outcome.success, "failure": outcome.data.get("failure"),
                 "message": outcome.data["executor"]["message"],
                 "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),
@@ -329,12 +336,10 @@ def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") 
     listener_pose = case.world.start
     heading = entry_heading(floorplan, room.name, listener_pose)
     t0 = time.perf_counter()
-    # the application layer's "where is", from the finished search (or the world file)
-    # (the listener is the default: the world's start pose)
-    answer = tools.finder.where_is(case.obj.name, case.world, case.scene,
-                                   search="sensed" if found is not None else "oracle", searched=found)
+    # where is it: described from the finished search, or (oracle) from the world file
+    result = tools.finder.where_is(case.obj.name, case.world, case.scene, listener=listener_pose,
+                                   search="sensed" if found is not None else "oracle", searched=found).description
     compose_ms = (time.perf_counter() - t0) * 1000
-    result = answer.description
     text = result.description
     meant = {n.rdt for n in result.selected if n.kind == "relation"}
     said_room = any(n.kind == "room" for n in result.selected)
@@ -350,7 +355,7 @@ def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") 
     ours = {f"{r.reference}-{r.direction}" for r in rdts}
     people = set().union(*[p for _, p in refs]) if refs else set()
     return {
-        "listener": _listen(tools.fetcher, result, case, listener_perception),
+        "listener": _listen(tools.runner, result, case, listener_perception),
         "search": None if found is None else _search_row(found, case.obj, room),
         "world": case.world_name, "scene": case.scene, "object": case.obj.name, "description": text,
         "support_id": support.id, "support_at": [round(float(v), 2) for v in support.centroid_m],
@@ -394,10 +399,10 @@ def summarise(rows: list[dict], tools: _Tools, search: str, listener_perception:
         "median_compose_ms": statistics.median(r["compose_ms"] for r in rows) if rows else None,
         "truth_checked_by": "parse" if tools.parser is not None else "generator nodes",
         "parser_note": tools.parser_note,
-        "listener_success": listened if tools.fetcher is not None else None,
+        "listener_success": listened if tools.runner is not None else None,
         "listener": (f"{listened}/{n} descriptions followed by the simulated robot (assistant fetch "
                      f"from the start pose, {listener_perception} perception) to a view of the object"
-                     if tools.fetcher is not None else tools.listener_note),
+                     if tools.runner is not None else tools.listener_note),
     }
 
 

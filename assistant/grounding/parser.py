@@ -12,13 +12,16 @@ from dataclasses import dataclass, replace
 from assistant.errors import AssistantError
 from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
-from assistant.grounding.rooms import first_named_room, named_room_groundings
+from assistant.grounding.rooms import first_named_room, named_room_groundings, side_room_groundings
 from assistant.grounding.said import said_reference_groundings
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
 
 #: longest command accepted, in words (a spoken fetch command has a few dozen)
 MAX_WORDS = 200
+#: longest command accepted, in characters, checked before any work (a pasted page would take
+#: the tokenizer and tagger tens of seconds before the word count refused it)
+MAX_CHARS = 2000
 
 
 @dataclass
@@ -79,6 +82,8 @@ class CommandParser:
         groundings = self.grounder.ground(records) if records else []
         # a room the home has, named in so many words, beats the grounder's guess among trained rooms
         groundings = named_room_groundings(records, groundings, self.world)
+        # "the room on your right": the floor plan says which room that is in this home
+        groundings = side_room_groundings(records, groundings, self.world)
         # a furniture reference no word names ("just ahead of you" → couch) is the listener
         groundings = said_reference_groundings(records, groundings)
         plan = assemble_plan(tree, groundings)
@@ -88,7 +93,11 @@ class CommandParser:
 
     def parse(self, text: str) -> ParseResult:
         """Parse and ground one command. Odd words never raise (they are listed in ``unused``);
-        only a command longer than :data:`MAX_WORDS` words is refused."""
+        only a command longer than :data:`MAX_WORDS` words or :data:`MAX_CHARS` characters is
+        refused."""
+        if len(text or "") > MAX_CHARS:
+            raise AssistantError(f"the command has {len(text)} characters, more than {MAX_CHARS}; "
+                                 "say it as several shorter commands")
         analysis = self.language.analyse(text or "")
         if len(analysis.tokens) > MAX_WORDS:
             raise AssistantError(f"the command has {len(analysis.tokens)} words, more than {MAX_WORDS}; "
@@ -96,6 +105,6 @@ class CommandParser:
         corrections = dict(getattr(analysis, "corrections", {}) or {})
         records, groundings, plan = self.ground_tree(analysis.tree, corrections)
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
-                                   analysis.unknown, corrections)
+                                   analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)
         return ParseResult(analysis, records, groundings, plan)
