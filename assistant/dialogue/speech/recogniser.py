@@ -8,7 +8,6 @@ when asked for another. Engines load their library lazily, so importing this mod
 
 from __future__ import annotations
 
-import time
 from abc import ABC, abstractmethod
 from dataclasses import asdict, dataclass, field
 
@@ -74,10 +73,6 @@ class Recogniser(ABC):
         """Engine, model and settings, for ``--json`` outputs and the docs."""
         return {"engine": self.name}
 
-    def _timed(self, decode, samples: np.ndarray) -> tuple[object, float]:
-        start = time.perf_counter()
-        result = decode(samples)
-        return result, time.perf_counter() - start
 
 
 def make_recogniser(name: str = DEFAULT_ENGINE, **options) -> Recogniser:
