@@ -65,6 +65,11 @@ class Recogniser(ABC):
     def recognise(self, samples: np.ndarray) -> Recognition:
         """Decode one utterance (16 kHz mono float samples, silence around it welcome)."""
 
+    def stream(self) -> "RecognitionStream":
+        """Decode while audio arrives: ``feed`` pieces, then ``finish()`` for the
+        :class:`Recognition` (engines without streaming decode everything at the end)."""
+        return RecognitionStream(self)
+
     def spot(self, samples: np.ndarray, keyword: str = "stop") -> bool:
         """Whether ``keyword`` is said in ``samples`` (barge-in); engines may do better."""
         return keyword in self.recognise(samples).transcript.split()
@@ -89,3 +94,21 @@ def make_recogniser(name: str = DEFAULT_ENGINE, **options) -> Recogniser:
     except ImportError as error:
         raise RecogniserError(f"the {name} recogniser cannot load ({error})") from None
     return getattr(module, class_name)(**options)
+
+
+class RecognitionStream:
+    """One utterance decoded as it arrives; this base collects the audio and decodes at the end."""
+
+    def __init__(self, recogniser: Recogniser):
+        self.recogniser = recogniser
+        self.pieces: list[np.ndarray] = []
+
+    def feed(self, samples: np.ndarray) -> None:
+        self.pieces.append(np.asarray(samples, dtype=np.float32))
+
+    @property
+    def samples(self) -> np.ndarray:
+        return np.concatenate(self.pieces) if self.pieces else np.zeros(0, dtype=np.float32)
+
+    def finish(self) -> Recognition:
+        return self.recogniser.recognise(self.samples)

@@ -23,7 +23,7 @@ import numpy as np
 
 from assistant.dialogue.speech.audio import to_pcm16
 from assistant.dialogue.speech.errors import RecogniserError, require
-from assistant.dialogue.speech.recogniser import Recognition, Recogniser
+from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
 
 #: decoder settings: pocketsphinx's language weights, wider beams than its defaults (12.2 % against
 #: 14.3 % word error on 55 clean test utterances, docs/speech.md), dither with a fixed seed
@@ -85,10 +85,16 @@ class PocketsphinxRecogniser(Recogniser):
     # ------------------------------------------------------------------ decoding
     def recognise(self, samples: np.ndarray) -> Recognition:
         samples = np.asarray(samples, dtype=np.float32)
-        audio_s = len(samples) / float(self.sample_rate_hz)
         start = time.perf_counter()
         pcm = to_pcm16(samples)
-        words = _decode(self._home, pcm)
+        return self._choose(_decode(self._home, pcm), pcm, start)
+
+    def stream(self) -> "SphinxStream":
+        return SphinxStream(self)
+
+    def _choose(self, words, pcm: bytes, start: float) -> Recognition:
+        """The home search's words, or the open search's when the home one is unsure."""
+        audio_s = len(pcm) / 2.0 / self.sample_rate_hz
         search = "home"
         if self.open_fallback and _confidence(words) < self.open_below:
             open_decoder = self._load_open()
@@ -101,11 +107,38 @@ class PocketsphinxRecogniser(Recogniser):
                            search, words)
 
 
+class SphinxStream(RecognitionStream):
+    """The home search fed while the person talks: at the end only its last passes remain.
+    (Cepstral mean normalisation is then live rather than over the whole utterance.)"""
+
+    def __init__(self, recogniser: PocketsphinxRecogniser):
+        super().__init__(recogniser)
+        recogniser._home.start_utt()
+        self.decode_s = 0.0
+
+    def feed(self, samples: np.ndarray) -> None:
+        super().feed(samples)
+        start = time.perf_counter()
+        self.recogniser._home.process_raw(to_pcm16(samples))
+        self.decode_s += time.perf_counter() - start
+
+    def finish(self) -> Recognition:
+        start = time.perf_counter()
+        self.recogniser._home.end_utt()
+        result = self.recogniser._choose(_words(self.recogniser._home), to_pcm16(self.samples), start)
+        result.decode_s += self.decode_s
+        return result
+
+
 def _decode(decoder, pcm: bytes) -> list[tuple[str, float, float, float]]:
     """(word, start s, end s, posterior) of the best hypothesis, fillers left out."""
     decoder.start_utt()
     decoder.process_raw(pcm, full_utt=True)
     decoder.end_utt()
+    return _words(decoder)
+
+
+def _words(decoder) -> list[tuple[str, float, float, float]]:
     if decoder.hyp() is None:
         return []
     out = []

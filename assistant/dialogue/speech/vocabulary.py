@@ -37,6 +37,9 @@ HOUSEHOLD_OBJECTS = (
 #: how many times more often the home's objects appear in the templates than everyday objects
 KNOWN_WEIGHT = 5
 
+#: how many times the control phrases are repeated in the model text
+CONTROL_WEIGHT = 60
+
 #: what people say to the dialogue outside commands (see :mod:`assistant.dialogue.intents`)
 CONTROL_PHRASES = (
     "stop", "stop now", "stop it", "please stop", "halt", "wait", "hold on", "cancel", "never mind",
@@ -210,7 +213,8 @@ def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
     """The sentences and phrases the recogniser's model is built from (see the module doc)."""
     words = home_words(world)
     sentences = corpus_sentences(corpus_paths) + template_sentences(words) + clause_sentences(words)
-    sentences += [normalise_transcript(p) for p in CONTROL_PHRASES]
+    # short phrases said on their own: weighted so a sentence start does not drown them
+    sentences += [normalise_transcript(p) for p in CONTROL_PHRASES] * CONTROL_WEIGHT
     phrases = [normalise_transcript(p) for p in CONTROL_PHRASES]
     phrases += [normalise_transcript(t.format(o=o)) for o in words["objects"] for t in OBJECT_TEMPLATES[:4]]
     phrases += words["rooms"] + words["furniture"]
