@@ -3,7 +3,7 @@
 #   make test   set up, then run the tests
 VENV ?= .venv
 PY := $(VENV)/bin/python
-SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng
+SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libfreenect-dev libfreenect-bin
 STAMP := $(VENV)/.installed
 
 .PHONY: run test setup system-packages bench clean
@@ -19,7 +19,8 @@ bench: setup
 
 setup: $(STAMP)
 
-# System libraries open3d (libusb, libgomp, GL/EGL for its module), speech output (espeak-ng).
+# System libraries open3d (libusb, libgomp, GL/EGL for its module), speech output (espeak-ng),
+# the Kinect (libfreenect-dev to build the freenect binding; libfreenect-bin for fakenect).
 system-packages:
 	@missing=""; for p in $(SYSTEM_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
@@ -31,7 +32,7 @@ system-packages:
 $(STAMP): pyproject.toml | system-packages
 	python3 -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
-	$(PY) -m pip install -q -e '.[dev]'
+	$(PY) -m pip install -q -e '.[dev,kinect]'
 	touch $(STAMP)
 
 clean:

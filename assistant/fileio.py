@@ -1,27 +1,53 @@
-"""Atomic file writes: what a user taught or recorded is never half-written.
+"""Atomic file writes, file locks and the user's folders: what a user taught or recorded is
+never half-written, never lost to a concurrent session, and private.
 
-A file is written to a temporary sibling, flushed to disk, then renamed over the target, so a
-crash leaves either the old file or the new one, never a truncated mix.
+A file is written to a temporary sibling (``.NAME.<pid>.<random>.tmp``), flushed to disk, then
+renamed over the target, so a crash leaves either the old file or the new one, never a
+truncated mix; the temporary files of writers that were killed are removed by the next write.
+:func:`file_lock` serialises the read-merge-write of files that several sessions share (object
+memory, taught demonstrations). Model caches are unpickled only from a folder that only the
+user can write.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
+import re
 import tempfile
 from pathlib import Path
 
+from assistant.errors import AssistantError
 
-def atomic_write_bytes(path: str | os.PathLike[str], data: bytes) -> Path:
-    """Write ``data`` to ``path`` atomically (creating parent folders); return the path."""
+#: mode of the files that hold what a person said, taught or was seen having (owner only)
+PRIVATE_FILE_MODE = 0o600
+#: mode of the folders that hold them and the model caches
+PRIVATE_DIR_MODE = 0o700
+#: how long a session waits for another one's lock on a shared file (seconds)
+LOCK_TIMEOUT_S = 15.0
+
+
+class FileBusyError(AssistantError):
+    """Another session held a shared file's lock for too long."""
+
+
+def atomic_write_bytes(path: str | os.PathLike[str], data: bytes, mode: int | None = None) -> Path:
+    """Write ``data`` to ``path`` atomically (creating parent folders); return the path.
+
+    ``mode`` (e.g. :data:`PRIVATE_FILE_MODE`) sets the file's permissions; None gives the usual
+    mode (``0666`` less the umask).
+    """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+    _sweep_stale_temporaries(target)
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.", suffix=".tmp",
+                                    dir=target.parent)
     try:
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
             handle.flush()
             os.fsync(handle.fileno())
-        os.chmod(tmp_name, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
+        os.chmod(tmp_name, (0o666 & ~_umask()) if mode is None else mode)  # mkstemp makes 0600
         os.replace(tmp_name, target)
     except BaseException:
         try:
@@ -32,15 +58,79 @@ def atomic_write_bytes(path: str | os.PathLike[str], data: bytes) -> Path:
     return target
 
 
+def _sweep_stale_temporaries(target: Path) -> None:
+    """Remove ``.NAME.<pid>.*.tmp`` siblings of ``target`` left by writers that no longer run
+    (killed with ``kill -9`` between creating and renaming them)."""
+    pattern = re.compile(rf"^\.{re.escape(target.name)}\.(\d+)\.[^.]+\.tmp$")
+    with contextlib.suppress(OSError):
+        for sibling in target.parent.iterdir():
+            found = pattern.match(sibling.name)
+            if found and not _process_runs(int(found.group(1))):
+                with contextlib.suppress(OSError):
+                    sibling.unlink()
+
+
+def _process_runs(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # someone else's process
+        return True
+    return True
+
+
+@contextlib.contextmanager
+def file_lock(path: str | os.PathLike[str], timeout_s: float = LOCK_TIMEOUT_S):
+    """Hold the lock of ``path`` (an OS lock on ``.NAME.lock`` beside it) for a
+    read-merge-write: another process holding it is waited for up to ``timeout_s``."""
+    import filelock
+
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    lock = filelock.FileLock(str(target.with_name(f".{target.name}.lock")), timeout=timeout_s,
+                             mode=PRIVATE_FILE_MODE)
+    try:
+        with lock:
+            yield target
+    except filelock.Timeout:
+        raise FileBusyError(f"{target} is locked by another session for over {timeout_s:g} s; "
+                            "close the other session (or remove its .lock file if it crashed) "
+                            "and try again") from None
+
+
+def private_dir(path: str | os.PathLike[str]) -> Path:
+    """Create ``path`` (and parents) if needed, readable by its owner only (``0700``)."""
+    folder = Path(path)
+    folder.mkdir(parents=True, exist_ok=True, mode=PRIVATE_DIR_MODE)
+    with contextlib.suppress(OSError):  # a folder the user made with other rights is tightened
+        if folder.stat().st_uid == os.getuid():
+            os.chmod(folder, PRIVATE_DIR_MODE)
+    return folder
+
+
 def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
 
 
-def atomic_write_text(path: str | os.PathLike[str], text: str, encoding: str = "utf-8") -> Path:
+def atomic_write_text(path: str | os.PathLike[str], text: str, encoding: str = "utf-8",
+                      mode: int | None = None) -> Path:
     """Write ``text`` to ``path`` atomically; see :func:`atomic_write_bytes`."""
-    return atomic_write_bytes(path, text.encode(encoding))
+    return atomic_write_bytes(path, text.encode(encoding), mode=mode)
+
+
+def user_data_dir() -> Path:
+    """The user's data folder — object memory, taught demonstrations, chat transcripts and
+    history: ``$ASSISTANT_DATA``, else ``$XDG_DATA_HOME/assistant``, else
+    ``~/.local/share/assistant``. Not created here; writers create it with
+    :func:`private_dir`."""
+    root = os.environ.get("ASSISTANT_DATA") or os.path.join(
+        os.environ.get("XDG_DATA_HOME") or os.path.expanduser("~/.local/share"), "assistant")
+    return Path(root)
 
 
 def cache_dir() -> Path:
@@ -48,9 +138,23 @@ def cache_dir() -> Path:
     root = os.environ.get("ASSISTANT_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assistant"
     )
-    path = Path(root)
-    path.mkdir(parents=True, exist_ok=True)
-    return path
+    return private_dir(root)
+
+
+def insecure_cache_reason(path: str | os.PathLike[str]) -> str | None:
+    """Why a cache file must not be unpickled (unpickling runs code), or None when it is safe:
+    the file and its folder belong to this user and no one else can write them."""
+    cache = Path(path)
+    for item in (cache.parent, cache):
+        try:
+            info = item.stat()
+        except OSError as error:
+            return f"cannot check {item}: {error.strerror}"
+        if info.st_uid != os.getuid():
+            return f"{item} belongs to another user"
+        if info.st_mode & 0o022:
+            return f"{item} can be written by other users (run: chmod go-w {item})"
+    return None
 
 
 def read_cache(path: str | os.PathLike[str], expected: type | tuple[type, ...] | None = None):
@@ -58,7 +162,8 @@ def read_cache(path: str | os.PathLike[str], expected: type | tuple[type, ...] |
 
     None when the file is missing, unreadable, truncated, written by older code that no longer
     unpickles, or not of the ``expected`` type; the reason is logged. A trained-model cache
-    never stops the product: the caller retrains and writes it again.
+    never stops the product: the caller retrains and writes it again. A file that someone else
+    could have written (:func:`insecure_cache_reason`) is never unpickled.
     """
     import logging
     import pickle
@@ -66,14 +171,18 @@ def read_cache(path: str | os.PathLike[str], expected: type | tuple[type, ...] |
     cache = Path(path)
     if not cache.is_file():
         return None
+    if (reason := insecure_cache_reason(cache)) is not None:
+        logging.getLogger(__name__).warning("not loading model cache %s: %s; retraining", cache, reason)
+        return None
     try:
         with open(cache, "rb") as handle:
             obj = pickle.load(handle)
     except Exception as error:  # stale or damaged cache of any kind: retrain
-        logging.getLogger(__name__).warning("ignoring unreadable model cache %s: %s", cache, error)
+        logging.getLogger(__name__).warning("ignoring unreadable model cache %s (%s); retraining", cache, error)
         return None
     if expected is not None and not isinstance(obj, expected):
-        logging.getLogger(__name__).warning("ignoring model cache %s: holds a %s", cache, type(obj).__name__)
+        logging.getLogger(__name__).warning("ignoring model cache %s: holds a %s; retraining",
+                                            cache, type(obj).__name__)
         return None
     return obj
 
@@ -82,4 +191,6 @@ def write_cache(path: str | os.PathLike[str], obj) -> Path:
     """Pickle a trained model to ``path`` atomically (read back with :func:`read_cache`)."""
     import pickle
 
-    return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL))
+    private_dir(Path(path).parent)
+    return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL),
+                              mode=PRIVATE_FILE_MODE)

@@ -57,7 +57,7 @@ def main() -> int:
         for case in cases:
             result = saved.get((case.world_name, case.scene, case.obj.name))
             if result is None:
-                from assistant.generation import search_for
+                from assistant.executor.search import search_for
                 from assistant.perception import FurnitureDetector
 
                 detector = detector or FurnitureDetector()

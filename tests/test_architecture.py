@@ -41,8 +41,6 @@ LAYERS: tuple[tuple[str, ...], ...] = (
 )
 #: the package's own entry points sit above everything
 TOP = ("__init__", "__main__")
-#: the checks not passing yet while issue 15 lands (remove the mark when they pass)
-IN_PROGRESS = pytest.mark.xfail(reason="issue 15: the eval, dialogue and generation moves are landing", strict=False)
 LAYER_OF = {name: rank for rank, names in enumerate(LAYERS) for name in names}
 
 
@@ -98,7 +96,6 @@ def test_every_package_has_a_layer():
     assert not unknown, f"packages missing from the layer order: {unknown}"
 
 
-@IN_PROGRESS
 def test_imports_only_go_downward():
     upward = []
     for path, module, target, _, line in own_imports():
@@ -108,7 +105,6 @@ def test_imports_only_go_downward():
     assert not upward, "upward imports:\n" + "\n".join(upward)
 
 
-@IN_PROGRESS
 def test_no_private_names_across_modules():
     private = []
     for path, module, target, names, line in own_imports():
@@ -133,7 +129,6 @@ def _resolve(target: str, names: list[str], modules: set[str]) -> list[str]:
     return out
 
 
-@IN_PROGRESS
 def test_no_import_cycles_between_modules():
     modules = {module_name(p) for p in source_files()}
     graph = nx.DiGraph()

@@ -26,8 +26,10 @@ COMMAND_MODULES = (
     "where",
     "teach",
     "chat",
+    "record",
     "listen",
     "eval",
+    "doctor",
 )
 
 
@@ -51,8 +53,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     limit_openmp_threads()
+    from assistant.cli.common import join_negative_values
+
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
     try:
         return int(args.handler(args) or 0)
     except AssistantError as error:

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import argparse
 
+from assistant.cli.common import seed_int
+
 PROMPT = "you> "
 
 
@@ -35,7 +37,7 @@ def register(subparsers) -> None:
                         help="object memory file (default: DATA/memory.json; DATA is $ASSISTANT_DATA or "
                              "~/.local/share/assistant)")
     parser.add_argument("--transcripts", metavar="DIR", help="where transcripts go (default: DATA/transcripts)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed")
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed")
     add_speech_arguments(parser)
     parser.set_defaults(handler=run)
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
+import re
 import sys
 from collections.abc import Callable, Iterable
 from typing import Any
@@ -34,6 +36,78 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
+#: longest command text accepted, in characters (a spoken command has a few hundred)
+MAX_COMMAND_CHARS = 2000
+#: longest batch line read, in bytes; a longer line is answered with an error and skipped
+MAX_LINE_BYTES = 64 * 1024
+
+
+def _finite_float(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value):
+        raise ValueError(f"number {text} is out of range")
+    return value
+
+
+def _no_constant(name: str):
+    raise ValueError(f"{name} is not a number a request may hold")
+
+
+def parse_request(line: str) -> dict:
+    """One JSON request object; numbers must be finite (``1e400``, ``NaN`` are refused)."""
+    try:
+        request = json.loads(line, parse_float=_finite_float, parse_constant=_no_constant)
+    except json.JSONDecodeError as error:
+        raise AssistantError(f"not JSON: {error.msg}") from None
+    if not isinstance(request, dict):
+        raise AssistantError("expected a JSON object")
+    return request
+
+
+def check_command_text(text) -> str:
+    """The command text, refused when empty or longer than :data:`MAX_COMMAND_CHARS`."""
+    if not isinstance(text, str):
+        raise AssistantError(f"the command must be text, got {type(text).__name__}")
+    if not text.strip():
+        raise AssistantError("the command is empty; say what to fetch, e.g. \"the mug is on the table\"")
+    if len(text) > MAX_COMMAND_CHARS:
+        raise AssistantError(f"the command has {len(text)} characters, more than {MAX_COMMAND_CHARS}; "
+                             "give one command at a time")
+    return text
+
+
+def request_int(request: dict, key: str, default: int, low: int = 0, high: int = 2**31 - 1) -> int:
+    """An integer field of a batch request (e.g. ``seed``), in ``[low, high]``."""
+    value = request.get(key, default)
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
+    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+        raise AssistantError(f"{key}: expected a whole number from {low} to {high}, got {value!r}")
+    return value
+
+
+def _batch_lines(handle):
+    """``(number, text or None, problem or None)`` per line of a binary file; a line that is
+    not UTF-8 or longer than :data:`MAX_LINE_BYTES` gives a problem instead of text."""
+    number = 0
+    while True:
+        raw = handle.readline(MAX_LINE_BYTES + 1)
+        if not raw:
+            return
+        number += 1
+        if len(raw) > MAX_LINE_BYTES and not raw.endswith(b"\n"):
+            while raw and not raw.endswith(b"\n"):  # skip the rest of the long line
+                raw = handle.readline(MAX_LINE_BYTES)
+            yield number, None, f"longer than {MAX_LINE_BYTES} bytes; give one request per line"
+            continue
+        if number == 1 and raw.startswith(b"\xef\xbb\xbf"):
+            raw = raw[3:]
+        try:
+            yield number, raw.decode("utf-8"), None
+        except UnicodeDecodeError as error:
+            yield number, None, f"not UTF-8 text (byte {raw[error.start]:#04x} at column {error.start + 1}); save the file as UTF-8"
+
+
 def run_batch(
     path: str,
     handle: Callable[[Any], dict],
@@ -42,27 +116,37 @@ def run_batch(
 ) -> int:
     """Answer one request per line of ``path`` with one JSON object per line, in order.
 
-    With ``json_requests`` each line is parsed as a JSON object first. A request that fails
-    gives ``{"error": ..., "line": n}`` on its line and the batch goes on. Blank lines are skipped.
+    With ``json_requests`` each line is parsed as a JSON object first (finite numbers only).
+    A request that fails gives ``{"error": ..., "line": n}`` on its line and the batch goes on
+    — whatever went wrong, even a fault of the product (then the error says to report it).
+    Blank lines are skipped.
     """
     try:
-        handle_file = sys.stdin if path == "-" else open(path, encoding="utf-8-sig")
+        handle_file = sys.stdin.buffer if path == "-" else open(path, "rb")
     except OSError as error:
         raise AssistantError(f"cannot read batch file {path}: {error.strerror}") from error
+    if path != "-" and os.path.isdir(path):
+        raise AssistantError(f"batch file {path} is a folder; give a file with one request per line")
     with handle_file:
-        for number, raw in enumerate(handle_file, start=1):
-            line = raw.strip()
-            if not line:
-                continue
+        for number, line, problem in _batch_lines(handle_file):
+            if problem is None:
+                line = line.strip()
+                if not line:
+                    continue
             try:
-                request = json.loads(line) if json_requests else line
-                if json_requests and not isinstance(request, dict):
-                    raise AssistantError("expected a JSON object")
-                emit_json(handle(request))
-            except json.JSONDecodeError as error:
-                emit_json({"error": f"line {number}: not JSON: {error.msg}", "line": number})
-            except (AssistantError, ValueError, KeyError, TypeError, argparse.ArgumentTypeError) as error:
-                emit_json({"error": f"line {number}: {error}", "line": number})
+                if problem is not None:
+                    raise AssistantError(problem)
+                request = parse_request(line) if json_requests else check_command_text(line)
+                answer = handle(request)
+            except (AssistantError, ValueError, KeyError, TypeError, OverflowError,
+                    argparse.ArgumentTypeError) as error:
+                answer = {"error": f"line {number}: {error}", "line": number}
+            except (KeyboardInterrupt, BrokenPipeError, MemoryError):
+                raise
+            except Exception as error:  # a fault of ours must not cost the other lines their answers
+                answer = {"error": f"line {number}: internal error ({type(error).__name__}: {error}); "
+                                   "please report it with this line", "line": number}
+            emit_json(answer)
     return 0
 
 
@@ -88,6 +172,62 @@ def parse_pose(text: str) -> tuple[float, float, float]:
     if not all(math.isfinite(v) for v in (x, y, heading)):
         raise argparse.ArgumentTypeError(f"pose values must be finite, got {text!r}")
     return x, y, heading
+
+
+def finite_float(text: str) -> float:
+    """A finite number for argparse (``inf`` and ``nan`` are refused)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    return value
+
+
+#: largest seed accepted (numpy's generators take 0 … 2**32 - 1)
+MAX_SEED = 2**32 - 1
+
+
+def seed_int(text: str) -> int:
+    """A random seed for argparse: a whole number from 0 to :data:`MAX_SEED`."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"a seed is a whole number, got {text!r}") from None
+    if not 0 <= value <= MAX_SEED:
+        raise argparse.ArgumentTypeError(f"a seed is from 0 to {MAX_SEED}, got {value}")
+    return value
+
+
+def out_file(suffix: str):
+    """An argparse type for a file to write: refuses a folder (``DIR/``) and another suffix."""
+    def parse(text: str) -> str:
+        if not text.strip() or text.endswith(("/", os.sep)) or os.path.isdir(text):
+            raise argparse.ArgumentTypeError(f"{text!r} is a folder; give a file name such as "
+                                             f"{os.path.join(text.rstrip('/') or '.', 'out' + suffix)}")
+        if not text.lower().endswith(suffix):
+            raise argparse.ArgumentTypeError(f"{text!r}: give a file name ending in {suffix}")
+        return text
+
+    return parse
+
+
+#: a value that starts with "-" and is made of numbers and commas (``-1.8,0.75,3.14``)
+_NEGATIVE_VALUES = re.compile(r"^-[0-9.][0-9.,eE+\- ]*$")
+
+
+def join_negative_values(argv: list[str]) -> list[str]:
+    """``--pose -1.8,0.75,3.14`` → ``--pose=-1.8,0.75,3.14``: argparse takes a value that starts
+    with "-" and is not one plain number for an option; this lets users write it as they would."""
+    out: list[str] = []
+    for item in argv:
+        if (out and out[-1].startswith("--") and "=" not in out[-1] and _NEGATIVE_VALUES.match(item)
+                and "," in item):
+            out[-1] = f"{out[-1]}={item}"
+        else:
+            out.append(item)
+    return out
 
 
 def miss_probability(text: str) -> float:

@@ -47,7 +47,8 @@ def realdata_summary_line(summary: dict) -> str:
     for what, t in summary["labelled"].items():
         part = f"{what} {t['correct']}/{t['labelled']}"
         if t["in_range"] < t["labelled"]:
-            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range)"
+            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range"
+            part += f"; {t['out_of_range_partial']} beyond it reported as partial)" if t.get("out_of_range_partial") else ")"
         parts.append(part)
     parts.append(f"false beds/couches: {summary['false_beds_or_couches_in_negatives']} in the "
                  f"negatives, {summary['false_beds_or_couches_elsewhere']} elsewhere")
@@ -112,12 +113,16 @@ def _print_realdata(realdata: dict, range_m: float) -> None:
         for f in frames:
             floor = f["floor"]
             fl = f"floor {floor['height']:.2f} m, tilt {floor['tilt_deg']:.1f}°, roll {floor['roll_deg']:.1f}°" if floor else "no floor"
-            dets = ", ".join(d["category"] for d in f["detections"]) or f"none ({f['reason']})"
-            print(f"  {folder}/{f['file']}: {fl}; detections: {dets}")
+            dets = ", ".join(d["category"] + (" (partial)" if d.get("partial") else "")
+                             + (f" (unsure {d['confidence']:.2f})" if d.get("unsure") else "")
+                             for d in f["detections"]) or f"none ({f['reason']})"
+            unknown = ", ".join(f"{u['best']} {u['probability']:.2f} ({u['why']})" for u in f.get("unknown", []))
+            print(f"  {folder}/{f['file']}: {fl}; detections: {dets}" + (f"; unknown: {unknown}" if unknown else ""))
             for m in f.get("matches", []):
                 share = (f", {100 * m['in_range_share']:.1f} % within {range_m:g} m"
                          if "in_range_share" in m else "")
-                print(f"      {m['object']}: {m.get('detected')} (pixels {m['pixels']}{share})")
+                part = " (partial)" if m.get("partial") else ""
+                print(f"      {m['object']}: {m.get('detected')}{part} (pixels {m['pixels']}{share})")
             for b in f.get("boxes", []):
                 print(f"      {b['object']}: {b['detected']}")
     print("  " + realdata_summary_line(realdata["summary"]))

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import require_text_or_batch, add_json_flag, emit_json, run_batch
+from assistant.cli.common import (MAX_SEED, add_json_flag, check_command_text, emit_json, request_int, require_text_or_batch,
+                                  run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -27,7 +28,10 @@ def register(subparsers) -> None:
                              "file's furniture (to separate language from perception errors)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed (odometry and depth noise)")
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (odometry and depth noise)")
+    parser.add_argument("--robot", metavar="SPEC", default="sim",
+                        help="sim (default) or replay:FILE.mcap — a recorded session (assistant record): "
+                             "its home is the recording's unless --world says otherwise")
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
                         "(default: the one the command names)")
     parser.add_argument("--batch", metavar="FILE",
@@ -44,7 +48,7 @@ def run(args: argparse.Namespace) -> int:
     from assistant.executor.trial import FetchRunner
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    runner = FetchRunner(grounder=args.grounder)
+    runner = FetchRunner(grounder=args.grounder, taught=True)
     if args.batch:
         def handle(request: dict) -> dict:
             unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
@@ -53,20 +57,28 @@ def run(args: argparse.Namespace) -> int:
                                      "text, world, scene, perception, object, seed")
             if not request.get("text") or not request.get("world"):
                 raise AssistantError("a request needs 'text' and 'world'")
+            check_command_text(request["text"])
+            if not isinstance(request["world"], str):
+                raise AssistantError(f"world: expected a name, got {request['world']!r}")
             perception = request.get("perception", args.perception)
             if perception not in PERCEPTION_MODES:
                 raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
             return runner.run(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
-                              perception, int(request.get("seed", args.seed)), request.get("object")).data
+                              perception, request_int(request, "seed", args.seed, high=MAX_SEED),
+                              request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
+    robot = _robot(args)
     if not args.world:
         from assistant.world import world_names
 
         raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
+    text = check_command_text(" ".join(args.text))
     view = _Viewer() if args.view else None
-    outcome = runner.run(" ".join(args.text), args.world, args.scene, args.perception, args.seed, args.object,
-                         on_event=view.on_event if view else None)
+    outcome = runner.run(text, args.world, args.scene, args.perception, args.seed, args.object,
+                         on_event=view.on_event if view else None, robot=robot)
+    if robot is not None and hasattr(robot, "command_report"):
+        outcome.data["replay"] = robot.command_report()
     if args.json:
         emit_json(outcome.data)
     else:
@@ -74,6 +86,25 @@ def run(args: argparse.Namespace) -> int:
     if view is not None:
         view.finish(outcome)
     return 0
+
+
+def _robot(args):
+    """None for the simulator (the runner makes it); a replay for ``replay:FILE``, whose
+    recorded home and scene fill in --world and --scene when not given."""
+    from assistant.errors import AssistantError
+    from assistant.robot import make_robot, parse_robot_spec
+
+    spec = parse_robot_spec(args.robot)
+    if spec.scheme == "sim":
+        return None
+    if spec.scheme != "replay":
+        raise AssistantError(f"fetch runs on the simulator or a replay for now, not {spec.scheme}")
+    robot = make_robot(spec)
+    recorded = robot.metadata
+    args.world = args.world or recorded.get("world") or None
+    if recorded.get("scene") and args.scene == "original":
+        args.scene = recorded["scene"]
+    return robot
 
 
 def _print(d: dict) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from assistant.cli.common import add_json_flag, emit_json, parse_pose, print_table, run_batch
+from assistant.cli.common import add_json_flag, emit_json, finite_float, parse_pose, print_table, run_batch
 
 
 def _numbers(count: int, what: str):
@@ -37,11 +37,11 @@ def register(subparsers) -> None:
     disk.add_argument("--depth", metavar="FILE.png", help="16-bit depth image")
     disk.add_argument("--intrinsics", type=_numbers(4, "--intrinsics"), metavar="FX,FY,CX,CY",
                       help="pinhole intrinsics in 0-based pixels")
-    disk.add_argument("--depth-scale", type=float, metavar="S",
+    disk.add_argument("--depth-scale", type=finite_float, metavar="S",
                       help="metres per depth unit (0.001 for millimetres)")
-    disk.add_argument("--camera-height", type=float, metavar="H",
+    disk.add_argument("--camera-height", type=finite_float, metavar="H",
                       help="camera height above the floor (m); with --tilt predicts the floor")
-    disk.add_argument("--tilt", type=float, metavar="DEG", help="camera pitch down (degrees)")
+    disk.add_argument("--tilt", type=finite_float, metavar="DEG", help="camera pitch down (degrees)")
     parser.add_argument("--orientation", default="plane", choices=("plane", "linear"),
                         help="orientation estimator (default: plane)")
     parser.add_argument("--classifier", default=None, choices=("gsvm", "lsvm", "autoencoder"),
@@ -109,7 +109,10 @@ def _handle(detector, req: dict) -> dict:
         from assistant.sim.renderer import DepthRenderer
         from assistant.world import load_world
 
+        from assistant.sim import check_pose_in_map
+
         world = load_world(req["world"])
+        check_pose_in_map(world, Pose2D(*req["pose"]))
         renderer = DepthRenderer(world, req.get("scene", "original"))
         frame = renderer.render(Pose2D(*req["pose"]))
         result = detector.analyse(frame)

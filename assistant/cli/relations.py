@@ -10,7 +10,11 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, print_table, run_batch
+from assistant.cli.common import add_json_flag, emit_json, finite_float, print_table, run_batch
+
+
+#: finest floor grid accepted (metres per cell): a house at 1 cm is already millions of cells
+MIN_RESOLUTION_M = 0.01
 
 
 def register(subparsers) -> None:
@@ -23,9 +27,9 @@ def register(subparsers) -> None:
     parser.add_argument("--scene", default="original", help="scene: original or modified")
     parser.add_argument("--reference", metavar="WORD_OR_ID",
                         help="only pairs whose reference is this furniture id or word (e.g. couch)")
-    parser.add_argument("--resolution", type=float, default=0.05, metavar="METRES",
+    parser.add_argument("--resolution", type=finite_float, default=0.05, metavar="METRES",
                         help="floor-grid cell size (default 0.05 m)")
-    parser.add_argument("--viewer", type=float, metavar="RADIANS",
+    parser.add_argument("--viewer", type=finite_float, metavar="RADIANS",
                         help="viewer heading for front-less references (default: the start heading)")
     parser.add_argument("--batch", metavar="FILE",
                         help="one JSON request per line: {world, scene, reference}; one JSON answer per line")
@@ -39,8 +43,8 @@ def _answer(world_name: str, scene: str, reference: str | None, resolution: floa
     from assistant.spatial import relations
     from assistant.world import load_world
 
-    if not (resolution > 0) or resolution > 1.0:
-        raise AssistantError(f"--resolution must be between 0 and 1 metre, got {resolution}")
+    if not MIN_RESOLUTION_M <= resolution <= 1.0:
+        raise AssistantError(f"--resolution must be from {MIN_RESOLUTION_M} to 1 metre, got {resolution}")
     world = load_world(world_name)
     sc = world.scene(scene)
     if reference is not None:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, parse_pose
+from assistant.cli.common import add_json_flag, emit_json, finite_float, out_file, parse_pose, seed_int
 
 
 def register(subparsers) -> None:
@@ -24,11 +24,11 @@ def register(subparsers) -> None:
     render.add_argument("--pose", required=True, type=parse_pose, metavar="X,Y,HEADING",
                         help="robot pose: metres, metres, radians counter-clockwise from +x")
     render.add_argument("--scene", default="original", help="scene: original or modified")
-    render.add_argument("--tilt", type=float, default=15.0, metavar="DEG",
+    render.add_argument("--tilt", type=finite_float, default=15.0, metavar="DEG",
                         help="downward tilt of the camera in degrees (default 15)")
-    render.add_argument("--seed", type=int, default=0, help="seed of the sensor noise (default 0)")
+    render.add_argument("--seed", type=seed_int, default=0, help="seed of the sensor noise (default 0)")
     render.add_argument("--no-noise", action="store_true", help="exact depth: no noise or quantisation")
-    render.add_argument("--out", required=True, metavar="FILE", help="PNG file to write")
+    render.add_argument("--out", required=True, metavar="FILE.png", type=out_file(".png"), help="PNG file to write")
     add_json_flag(render)
     render.set_defaults(handler=run_render)
 
@@ -47,6 +47,9 @@ def run_render(args: argparse.Namespace) -> int:
     from assistant.sim import DepthRenderer, KinectNoise, check_pose_in_map
     from assistant.world import load_world
 
+    from assistant.perception.depthfile import check_mount
+
+    check_mount(None, args.tilt)
     world = load_world(args.name)
     scene = world.scene(args.scene).name
     pose = Pose2D(*args.pose)

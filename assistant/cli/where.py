@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, miss_probability, parse_pose, run_batch
+from assistant.cli.common import (MAX_SEED, add_json_flag, emit_json, miss_probability, parse_pose, request_int,
+                                  run_batch, seed_int)
 
 
 def register(subparsers) -> None:
@@ -40,7 +41,7 @@ def register(subparsers) -> None:
     parser.add_argument("--miss-rate", type=miss_probability, default=0.0, metavar="P",
                         help="sensed search: probability that the object detector misses a visible "
                              "object in a frame (default 0)")
-    parser.add_argument("--seed", type=int, default=0, help="sensed search: simulator seed")
+    parser.add_argument("--seed", type=seed_int, default=0, help="sensed search: simulator seed")
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="annotated corpus (XML + chunk-grounding CSV, files or folders) to "
                              "learn from instead of the repository's corpus/")
@@ -65,8 +66,8 @@ def run(args: argparse.Namespace) -> int:
             return answer(describer, request.get("object"), request.get("world"),
                           request.get("scene", "original"), listener, request.get("style"),
                           request.get("question"), search=request.get("search", args.search),
-                          miss_rate=float(request.get("miss_rate", args.miss_rate)),
-                          seed=int(request.get("seed", args.seed)), shared=shared).to_dict()
+                          miss_rate=miss_probability(str(request.get("miss_rate", args.miss_rate))),
+                          seed=request_int(request, "seed", args.seed, high=MAX_SEED), shared=shared).to_dict()
         return run_batch(args.batch, handle, json_requests=True)
     if not args.object or not args.world:
         raise AssistantError("give an object and --world NAME (or --batch FILE)")
@@ -126,7 +127,7 @@ def answer(describer, name, world_name, scene="original", listener=None, style=N
     if style is None:
         style = style_for_question(question) if question else "static"
     if search == "sensed":
-        from assistant.generation import search_for
+        from assistant.executor.search import search_for
 
         shared = {} if shared is None else shared
         if "furniture_detector" not in shared:

@@ -29,7 +29,8 @@ from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_optio
                                         progress_sentence, unused_mentions)
 from assistant.dialogue.intents import classify, teach_phrase
 from assistant.dialogue.memory import ObjectMemory
-from assistant.dialogue.services import Interrupted, Services, furniture_phrase
+from assistant.dialogue.services import (Interrupted, Services, furniture_phrase, known_object_names,
+                                         world_environment)
 
 NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
@@ -220,7 +221,7 @@ class DialogueManager:
     # ------------------------------------------------------------------ where / how
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
         """(known object named in the text, or None; the unknown noun asked about, or None)."""
-        known = sorted(_known_objects(self.world), key=len, reverse=True)
+        known = sorted(known_object_names(self.world), key=len, reverse=True)
         padded = f" {norm} "
         for k in known:
             if f" {k} " in padded or f" {k}s " in padded:
@@ -237,7 +238,7 @@ class DialogueManager:
     def _where(self, text: str, intent, start: float) -> Turn:
         obj, unknown = self._object_in(intent.text)
         if obj is None:
-            names = _join(sorted(_known_objects(self.world)), "or")
+            names = _join(sorted(known_object_names(self.world)), "or")
             if unknown:
                 return self._turn(text, intent.name, f"I don't know what {article(unknown)} {unknown} is, so I "
                                   f"can't look for it. I can look for: {names}.", "answer", "not_understood",
@@ -293,20 +294,20 @@ class DialogueManager:
         """The generation layer's answer, the way ``assistant where --search oracle`` composes it
         (the furniture from the simulator's world file; the object's position from there too, or
         from the memory's sighting ``seen``)."""
-        from assistant.generation import ObjectSighting, not_found_description, oracle_sighting
+        from assistant.generation import not_found_description, oracle_sighting
+        from assistant.perception.objects import Sighting
 
         if seen is not None:
             from assistant.geometry import Pose2D
 
-            sighting = ObjectSighting(obj, seen.x_m, seen.y_m, 0.7, seen.room, Pose2D(seen.x_m, seen.y_m, 0.0), 0.0)
+            sighting = Sighting(obj, seen.x_m, seen.y_m, 0.7, room=seen.room, seen_from=Pose2D(seen.x_m, seen.y_m, 0.0))
         else:
             sighting = oracle_sighting(self.world, self.scene, obj)
         if sighting is None:
             return not_found_description(obj, self.rooms)
         listener = self.world.start  # the person talks to the robot where it started
-        from assistant.dialogue.services import _env
-
-        return self.services.describer.describe(sighting, _env(self.world, self.scene), self.world.floorplan,
+        return self.services.describer.describe(sighting, world_environment(self.world, self.scene),
+                                                self.world.floorplan,
                                                 listener_pose=listener, style=style)
 
     # ------------------------------------------------------------------ teaching
@@ -623,10 +624,10 @@ class DialogueManager:
     def _finish_search(self, name: str, result, recorder, style: str, start: float) -> Turn:
         """The search's answer: where the object is (composed from what the robot perceived), or
         the honest "I looked in … and did not find …"."""
-        if result.found and result.placed is not None:
-            recorder.add([result.placed])
+        if result.found and result.sighting is not None:
+            recorder.add([result.sighting])
         summary = self._remember_seen(recorder, getattr(result, "furniture", None))
-        data = {"object": name, "found": bool(result.found), "status": result.status,
+        data = {"object": name, "found": bool(result.found), "status": str(getattr(result.status, "value", result.status)),
                 "rooms_searched": list(result.rooms_searched), "seen": summary["seen"], "source": "search",
                 "search_seconds": round(float(getattr(result, "wall_seconds", 0.0) or 0.0), 2)}
         listener = self.world.start  # the person talks to the robot where it started
@@ -751,14 +752,3 @@ _POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks"
            "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
 
 _VAGUE = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}
-_KNOWN: dict = {}
-
-
-def _known_objects(world) -> list[str]:
-    """Object names the robot can look for (cached per world; the generation layer's list)."""
-    key = id(world)
-    if key not in _KNOWN:
-        from assistant.generation import known_objects
-
-        _KNOWN[key] = list(known_objects(world))
-    return _KNOWN[key]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
+import os
 import sys
 import threading
 from pathlib import Path
@@ -11,7 +12,7 @@ from pathlib import Path
 from assistant.dialogue.manager import DialogueManager, Turn
 from assistant.dialogue.memory import ObjectMemory, default_data_dir
 from assistant.dialogue.services import Services
-from assistant.fileio import atomic_write_text
+from assistant.fileio import PRIVATE_FILE_MODE, atomic_write_text, private_dir
 
 PROMPT = "you> "
 
@@ -102,8 +103,10 @@ class ChatSession:
         entry = {"time": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="milliseconds")} | turn.to_dict()
         self.records.append(entry)
         try:
+            private_dir(self.transcript_path.parent)
             atomic_write_text(self.transcript_path, json.dumps(
-                {"world": self.world.name, "scene": self.scene, "turns": self.records}, indent=1) + "\n")
+                {"world": self.world.name, "scene": self.scene, "turns": self.records}, indent=1) + "\n",
+                mode=PRIVATE_FILE_MODE)
         except OSError as error:
             self._print(f"(could not save the transcript: {error})")
 
@@ -140,8 +143,9 @@ class ChatSession:
         if readline is None:
             return
         try:
-            self.history_path.parent.mkdir(parents=True, exist_ok=True)
+            private_dir(self.history_path.parent)
             readline.write_history_file(self.history_path)
+            os.chmod(self.history_path, PRIVATE_FILE_MODE)
         except OSError:
             pass
 

@@ -1,7 +1,7 @@
 """Remembering every object the robot sees during a task (fetch, search).
 
 Tasks report what their object detector sees as ``objects_seen`` events, ``{"seen":
-[PlacedSighting, …], "pose": Pose2D}`` (:mod:`assistant.executor.sightings`): the object's
+[Sighting, …], "pose": Pose2D}`` (:mod:`assistant.executor.sightings`): the object's
 position, its room (floor plan) and the perceived furniture it lies on. A
 :class:`SeenRecorder` turns them into the object memory:
 
@@ -18,6 +18,7 @@ Times are wall-clock seconds since the epoch (the memory's clock), not the simul
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 import threading
@@ -46,8 +47,8 @@ class SeenRecorder:
         self.memory = memory
         self.world = world
         self.source = source
-        self.latest: dict[str, tuple[object, float, object]] = {}  # name → (PlacedSighting, time_s, pose)
-        self.before: dict[str, object] = {}  # name → the memory's Sighting before this task (or None)
+        self.latest: dict[str, tuple[object, float, object]] = {}  # name → (placed Sighting, time_s, pose)
+        self.before: dict[str, object] = {}  # name → the memory's entry before this task (or None)
         self._lock = threading.Lock()
 
     # ----------------------------------------------------------------- events
@@ -74,7 +75,7 @@ class SeenRecorder:
                 word = category_word(placed.furniture_category)
                 self.memory.remember(self.world, obj, placed.room, placed.furniture_id, word,
                                      f"on the {word}" if word else None, time_s=now, source=self.source,
-                                     x_m=placed.sighting.x_m, y_m=placed.sighting.y_m)
+                                     x_m=placed.x_m, y_m=placed.y_m)
         return new
 
     # ----------------------------------------------------------------- end of task
@@ -100,8 +101,8 @@ class SeenRecorder:
                 phrase = f"on the {word}"
             s = self.memory.remember(self.world, obj, placed.room, placed.furniture_id,
                                      word if placed.furniture_id is not None else None, phrase,
-                                     time_s=when, source=self.source, x_m=placed.sighting.x_m,
-                                     y_m=placed.sighting.y_m, save=False)
+                                     time_s=when, source=self.source, x_m=placed.x_m,
+                                     y_m=placed.y_m, save=False)
             places[obj] = s.to_dict()
         if latest:
             self.memory.save()
@@ -116,17 +117,16 @@ def _moved(remembered, placed) -> bool:
         return True
     if remembered.x_m is None or remembered.y_m is None:
         return False
-    return math.hypot(remembered.x_m - placed.sighting.x_m, remembered.y_m - placed.sighting.y_m) > MOVED_M
+    return math.hypot(remembered.x_m - placed.x_m, remembered.y_m - placed.y_m) > MOVED_M
 
 
 def compose_phrase(describer, placed, pose, furniture, floorplan) -> str | None:
     """"on the table against the right wall by the chair": the generation layer's description of
     the object among the perceived ``furniture``, for a listener inside its room (so the room is
     not part of the phrase); None when it cannot be composed."""
-    from assistant.generation import ObjectSighting
     from assistant.geometry import Pose2D
 
-    s = placed.sighting
+    s = placed
     room = placed.room
     listener = None
     if room is not None:
@@ -136,7 +136,7 @@ def compose_phrase(describer, placed, pose, furniture, floorplan) -> str | None:
         except Exception:
             listener = None
     seen_from = pose if pose is not None else Pose2D(s.x_m, s.y_m, 0.0)
-    sighting = ObjectSighting(s.name, float(s.x_m), float(s.y_m), float(s.z_m), room, seen_from, 0.0)
+    sighting = dataclasses.replace(placed, seen_from=seen_from)
     try:
         result = describer.describe(sighting, list(furniture), floorplan, listener_pose=listener)
     except Exception:  # no furniture under it, etc.: the word-only phrase will do

@@ -35,7 +35,7 @@ class FetchReport:
     object_seen: bool = False
     wall_seconds: float = 0.0
     data: dict = field(default_factory=dict)
-    seen: list = field(default_factory=list)  # PlacedSighting: the latest of each object seen
+    seen: list = field(default_factory=list)  # placed Sightings: the latest of each object seen
     furniture: list | None = None  # the perceived furniture entities at the end (phrases)
 
 
@@ -65,7 +65,7 @@ class Services:
 
     ``perception``: ``oracle`` or ``sensed`` furniture perception for fetches and searches;
     ``search``: how "where is my X?" is answered when memory has nothing — ``sensed`` (the robot
-    searches the home, :class:`~assistant.generation.search.ObjectSearch`) or ``oracle`` (the
+    searches the home, :class:`~assistant.executor.search.SearchTask`) or ``oracle`` (the
     simulator's world file, labelled as such); ``parser``, ``describer``, ``fetcher``,
     ``searcher`` may be given (a fetcher is any callable ``(text, world, scene, on_event) ->
     FetchReport``, a searcher ``(name, world, scene, on_event) -> SearchResult``).
@@ -116,7 +116,8 @@ class Services:
             if self._runner is None:
                 from assistant.executor.trial import FetchRunner
 
-                self._runner = FetchRunner(parser=self._parser) if self._parser is not None else FetchRunner()
+                self._runner = FetchRunner(parser=self._parser, taught=True) if self._parser is not None \
+                    else FetchRunner(taught=True)
             return self._runner
 
     def fetch(self, text: str, world: str, scene: str, on_event=None, stop=None, on_pose=None) -> FetchReport:
@@ -131,15 +132,16 @@ class Services:
     def search(self, name: str, world: str, scene: str, on_event=None, stop=None, on_pose=None):
         """Search the simulated home for object ``name`` from the world's start pose (blocking;
         call it from a worker thread): the generation layer's
-        :class:`~assistant.generation.search.ObjectSearch` with this session's furniture
+        :class:`~assistant.executor.search.SearchTask` with this session's furniture
         perception and the simulator's object detector, the robot wrapped in a
-        :class:`StoppableRobot`. Returns its :class:`~assistant.generation.search.SearchResult`."""
+        :class:`StoppableRobot`. Returns its :class:`~assistant.executor.search.SearchResult`."""
         if self._searcher is not None:
             return self._searcher(name, world, scene, on_event)
+        from assistant.executor.context import TaskContext
+        from assistant.executor.search import SEARCH_BUDGET_S, SearchTask
         from assistant.executor.sensing import make_furniture_source
-        from assistant.generation.search import ObjectSearch
         from assistant.perception.objects import SimObjectDetector
-        from assistant.sim import OdometryNoise, SimRobot
+        from assistant.robot import make_robot
         from assistant.world import load_world
 
         runner = self.runner()
@@ -148,10 +150,11 @@ class Services:
         source = make_furniture_source(self.perception, w, sc.name,
                                        detector=runner.detector if self.perception == "sensed" else None)
         detector = SimObjectDetector.for_scene(sc, seed=self.seed)
-        task = ObjectSearch(w, detector, source, on_event=on_event)
-        with SimRobot(w, sc.name, seed=self.seed, odometry_noise=OdometryNoise() if runner.noise else None) as robot:
+        with make_robot("sim", world=w, scene=sc.name, seed=self.seed, noise=runner.noise) as robot:
             try:
-                return task.run(StoppableRobot(robot, stop, on_pose), " ".join(name.lower().split()))
+                ctx = TaskContext.start(w, StoppableRobot(robot, stop, on_pose), source,
+                                        max_sim_seconds=SEARCH_BUDGET_S, on_event=on_event)
+                return SearchTask(detector).run(ctx, " ".join(name.lower().split()))
             except Interrupted as error:
                 error.furniture = source.furniture()
                 raise
@@ -163,10 +166,8 @@ class Services:
             try:
                 self.parser(world)
                 self.describer  # noqa: B018 (property builds it)
-                _env(world, world.scene(scene).name)
-                from assistant.dialogue.manager import _known_objects
-
-                _known_objects(world)
+                world_environment(world, world.scene(scene).name)
+                known_object_names(world)
                 if self._fetcher is None:
                     runner = self.runner()
                     runner.policies  # noqa: B018
@@ -224,12 +225,13 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
     """One fetch the way :meth:`assistant.executor.trial.FetchRunner.run` does it (same parser,
     policies, detector, task and evaluation functions), with the robot wrapped in a
     :class:`StoppableRobot`. Returns the ``assistant fetch --json`` fields."""
-    from assistant.executor.fetch import FetchResult, FetchTask
+    from assistant.executor.context import TaskContext
+    from assistant.executor.fetch import FetchTask
     from assistant.executor.outcome import ExecutionStatus
     from assistant.executor.sensing import make_furniture_source
     from assistant.executor.trial import is_visible, object_visibility
     from assistant.perception.objects import SimObjectDetector
-    from assistant.sim import OdometryNoise, SimRobot
+    from assistant.robot import make_robot
     from assistant.world import load_world
 
     start = time.perf_counter()
@@ -241,11 +243,12 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
     # the robot's object detector (the simulator's model of one): every object it sees on the
     # way becomes an ``objects_seen`` event for the memory
     detector = SimObjectDetector.for_scene(w.scene(scene), seed=seed)
-    task = FetchTask(w, source, runner.policies, max_sim_seconds=runner.max_sim_seconds, on_event=on_event,
-                     object_detector=detector)
-    with SimRobot(w, scene, seed=seed, odometry_noise=OdometryNoise() if runner.noise else None) as robot:
+    task = FetchTask(runner.policies, object_detector=detector)
+    with make_robot("sim", world=w, scene=scene, seed=seed, noise=runner.noise) as robot:
         try:
-            result = task.run(StoppableRobot(robot, stop, on_pose), plan)
+            ctx = TaskContext.start(w, StoppableRobot(robot, stop, on_pose), source,
+                                    max_sim_seconds=runner.max_sim_seconds, on_event=on_event)
+            result = task.run(ctx, plan)
         except Interrupted as error:
             error.furniture = source.furniture()
             raise
@@ -261,7 +264,7 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
 
         final = {p.name: p for p in place_sightings(w, source.furniture(), in_view)}
         seen = [final.pop(p.name, p) for p in seen] + list(final.values())
-    if isinstance(result, FetchResult) and not result.success:
+    if not result.success:
         failure = result.status.value
     elif not is_visible(visibility):
         failure = ExecutionStatus.NOT_VISIBLE.value
@@ -284,13 +287,13 @@ def run_trial(runner, text: str, world: str, scene: str = "original", perception
 def furniture_phrase(describer, world, scene: str, item, listener_in_room: bool = True) -> str:
     """A short phrase that singles furniture ``item`` out, "on the table in front of the couch",
     made by the describer for a thing placed on it (the generation layer's content selection)."""
-    from assistant.generation import ObjectSighting
     from assistant.geometry import Pose2D
+    from assistant.perception.objects import Sighting
 
-    sighting = ObjectSighting("thing", item.x, item.y, 0.8, item.room, Pose2D(item.x, item.y, 0.0), 0.0)
+    sighting = Sighting("thing", item.x, item.y, 0.8, room=item.room, seen_from=Pose2D(item.x, item.y, 0.0))
     listener = _room_pose(world, item.room) if listener_in_room else None
     try:
-        result = describer.describe(sighting, _env(world, scene), world.floorplan, listener_pose=listener)
+        result = describer.describe(sighting, world_environment(world, scene), world.floorplan, listener_pose=listener)
     except Exception:  # a phrase is a courtesy; fall back to the word
         return f"on the {item.word}"
     text = result.description.strip().rstrip(".")
@@ -300,16 +303,34 @@ def furniture_phrase(describer, world, scene: str, item, listener_in_room: bool 
     return text
 
 
+#: (world name, scene) → (the World, its world-file furniture); the World is kept so that a
+#: world of the same name loaded again (another file) is not served the old furniture
 _ENV_CACHE: dict = {}
+#: world name → (the World, the object names the robot can look for there)
+_KNOWN: dict = {}
 
 
-def _env(world, scene):
+def world_environment(world, scene: str) -> list:
+    """The world file's furniture of ``scene`` as environment entities (the ``oracle``
+    environment the simulator-backed answers are composed from), built once per world."""
     from assistant.generation import oracle_environment
 
-    key = (world.name, scene, id(world))
-    if key not in _ENV_CACHE:
-        _ENV_CACHE[key] = oracle_environment(world, scene)
-    return _ENV_CACHE[key]
+    key = (world.name, scene)
+    hit = _ENV_CACHE.get(key)
+    if hit is None or hit[0] is not world:
+        hit = _ENV_CACHE[key] = (world, oracle_environment(world, scene))
+    return hit[1]
+
+
+def known_object_names(world) -> list[str]:
+    """Object names the robot can look for in ``world`` (the generation layer's list), built
+    once per world."""
+    from assistant.generation import known_objects
+
+    hit = _KNOWN.get(world.name)
+    if hit is None or hit[0] is not world:
+        hit = _KNOWN[world.name] = (world, list(known_objects(world)))
+    return hit[1]
 
 
 def _room_pose(world, room: str):

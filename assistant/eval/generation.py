@@ -1,7 +1,7 @@
 """``assistant eval generation``: Table 6-1 of the dissertation, reproduced on this product.
 
 The 24 objects of the four study homes in both scenes (48 descriptions). For each, the simulated
-robot first *searches* the home from the world's start pose (:mod:`assistant.generation.search`:
+robot first *searches* the home from the world's start pose (:mod:`assistant.executor.search`:
 room by room, furniture perceived from depth, the object seen by the simulator's object
 detector), and the description is composed from the environment model that search built
 (``--search oracle``: the world file's object position and furniture instead). Search success
@@ -210,7 +210,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
         if search == "sensed":
             found = (searches or {}).get((case.world_name, case.scene, case.obj.name))
             if found is None:
-                from assistant.generation.search import search_for
+                from assistant.executor.search import search_for
 
                 found = search_for(case.obj.name, case.world, case.scene,
                                    furniture_detector=tools.furniture_detector, miss_rate=miss_rate)
@@ -236,13 +236,13 @@ def _case_line(row: dict) -> str:
 
 def _search_row(found, obj, room) -> dict:
     """How the robot's search for ``obj`` went, against the ground truth."""
-    error_m = (math.hypot(found.sighting.x - obj.x, found.sighting.y - obj.y)
+    error_m = (math.hypot(found.sighting.x_m - obj.x, found.sighting.y_m - obj.y)
                if found.found else None)
     right_place = bool(found.found and found.sighting.room == room.name and error_m <= 0.3)
     return {"found": found.found, "right_place": right_place,
             "position_error_m": None if error_m is None else round(error_m, 3),
             "room_seen": found.sighting.room if found.found else None,
-            "support_perceived": found.placed.furniture_category if found.placed else None,
+            "support_perceived": found.sighting.furniture_category if found.sighting else None,
             "rooms_searched": found.rooms_searched, "path_m": round(found.path_m, 2),
             "sim_seconds": round(found.sim_seconds, 1),
             "wall_seconds": round(found.wall_seconds, 2),

@@ -1,11 +1,15 @@
-"""The executor: doing what the plan says — room entry, path planning, motion control.
+"""The executor: robot tasks (fetch, search) over one explicit :class:`TaskContext`, room
+entry, choosing furniture, path planning, motion control, localization.
 
 Outcomes are values (:class:`ExecutionResult` with an :class:`ExecutionStatus`), never
 exceptions for things that happen in a home. Planning reads the floor plan the robot is told
 and the furniture perception reports; motion drives any robot through its shared interface.
 """
 
-from assistant.executor.fetch import FetchResult, FetchTask, NodeReport
+from assistant.executor.choosing import PlaceChooser, Said
+from assistant.executor.context import BudgetSpent, TaskContext
+from assistant.executor.entry import enter_room
+from assistant.executor.fetch import FETCH_BUDGET_S, FetchTask
 from assistant.executor.localization import FloorplanLocalizer, LocalizationUpdate, wall_faces
 from assistant.executor.motion import (
     DrivableRobot,
@@ -19,6 +23,7 @@ from assistant.executor.motion import (
 from assistant.executor.navigation import Navigator
 from assistant.executor.obstacles import DepthObstacles
 from assistant.executor.outcome import ExecutionResult, ExecutionStatus
+from assistant.executor.reports import FetchResult, NodeReport
 from assistant.executor.planning import (
     NoPathError,
     OccupancyMap,
@@ -35,12 +40,14 @@ from assistant.executor.sensing import (
     SensedFurniture,
     make_furniture_source,
 )
-from assistant.executor.sightings import PlacedSighting, place_sightings
+from assistant.executor.search import SEARCH_BUDGET_S, SearchResult, SearchTask, room_order
+from assistant.executor.sightings import place_sightings
 from assistant.executor.trial import FetchRunner, object_visibility
 
 __all__ = [
-    "FetchResult", "FetchRunner", "FetchTask", "FurnitureSource", "NodeReport", "OracleFurniture",
-    "PERCEPTION_MODES", "PlacedSighting", "SensedFurniture", "place_sightings", "make_furniture_source", "object_visibility",
+    "BudgetSpent", "FETCH_BUDGET_S", "FetchResult", "FetchRunner", "FetchTask", "FurnitureSource", "NodeReport",
+    "OracleFurniture", "PERCEPTION_MODES", "PlaceChooser", "SEARCH_BUDGET_S", "Said", "SearchResult", "SearchTask",
+    "SensedFurniture", "TaskContext", "enter_room", "room_order", "place_sightings", "make_furniture_source", "object_visibility",
     "DepthObstacles", "DoorCrossing", "DrivableRobot", "ExecutionResult", "ExecutionStatus", "FloorplanLocalizer",
     "LocalizationUpdate", "Localizer", "MotionLimits", "Navigator", "NoPathError",
     "OccupancyMap", "PathFollower", "PlannedPath", "RoomGraph", "build_occupancy", "door_crossing",

@@ -15,7 +15,8 @@ from assistant.geometry import Pose2D
 
 
 class ExecutionStatus(str, Enum):
-    """Why a step of the fetch task ended."""
+    """Why a step, a task or a use case ended: the product's one status enum (the application
+    layer's :class:`~assistant.app.result.Status` is this enum)."""
 
     SUCCESS = "success"
     PARSE = "parse"  # the words could not be turned into a plan
@@ -25,7 +26,9 @@ class ExecutionStatus(str, Enum):
     COLLISION = "collision"  # the robot bumped, or stopped because its path ahead is blocked
     NOT_VISIBLE = "not_visible"  # arrived, but the target is not in the camera's view
     AMBIGUOUS = "ambiguous"  # several things fit the description equally well
+    NOT_FOUND = "not_found"  # a search looked everywhere it could and did not see the object
     TIMEOUT = "timeout"  # the time or step budget of a motion ran out
+    STOPPED = "stopped"  # the person asked the robot to stop
 
 
 @dataclass(frozen=True)

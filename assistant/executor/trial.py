@@ -65,11 +65,13 @@ class TrialOutcome:
 class FetchRunner:
     """Shared, slow-to-build parts of fetch trials (parser, policies, detector), built on first
     use. ``grounder``: the grounding model name (None = the default); ``noise``: drive with the
-    simulator's odometry noise (the localizer corrects it)."""
+    simulator's odometry noise (the localizer corrects it); ``taught``: train the policies on
+    the user's taught demonstrations too (the product does, the evaluations do not)."""
 
     def __init__(self, grounder: str | None = None, noise: bool = True, policies=None, detector=None,
-                 parser=None, max_sim_seconds: float = 900.0):
+                 parser=None, max_sim_seconds: float = 900.0, taught: bool = False):
         self.grounder = grounder
+        self.taught = taught
         self.noise = noise
         self._policies = policies
         self._detector = detector
@@ -95,7 +97,7 @@ class FetchRunner:
         if self._policies is None:
             from assistant.policy.library import PolicyLibrary
 
-            self._policies = PolicyLibrary()
+            self._policies = PolicyLibrary(taught=self.taught)
         return self._policies
 
     @property
@@ -107,13 +109,17 @@ class FetchRunner:
         return self._detector
 
     def run(self, text: str, world: str, scene: str = "original", perception: str = "sensed",
-            seed: int = 0, object_name: str | None = None, on_event=None) -> TrialOutcome:
+            seed: int = 0, object_name: str | None = None, on_event=None, robot=None) -> TrialOutcome:
         """One fetch; ``object_name`` overrides the plan's object for evaluation (the dev set
-        says which object the command is about)."""
-        from assistant.executor.fetch import FetchResult, FetchTask
+        says which object the command is about). ``robot``: an unconnected robot to use instead
+        of a new simulator (a recording or a replay); without the simulator's hit ids the
+        object is judged by the task's own result."""
+        from assistant.executor.context import TaskContext
+        from assistant.executor.fetch import FetchTask
         from assistant.executor.outcome import ExecutionStatus
         from assistant.executor.sensing import make_furniture_source
-        from assistant.sim import OdometryNoise, SimRobot
+        from assistant.perception.objects import SimObjectDetector
+        from assistant.robot import make_robot
         from assistant.world import load_world
 
         start = time.perf_counter()
@@ -123,21 +129,21 @@ class FetchRunner:
         plan = parsed.plan
         source = make_furniture_source(perception, w, scene,
                                        detector=self.detector if perception == "sensed" else None)
-        from assistant.perception.objects import SimObjectDetector
-
-        task = FetchTask(w, source, self.policies, max_sim_seconds=self.max_sim_seconds, on_event=on_event,
-                         object_detector=SimObjectDetector.for_scene(w.scene(scene)))
+        task = FetchTask(self.policies, object_detector=SimObjectDetector.for_scene(w.scene(scene)))
         path: list = []
-        with SimRobot(w, scene, seed=seed, odometry_noise=OdometryNoise() if self.noise else None) as robot:
-            result = task.run(robot, plan)
+        if robot is None:
+            robot = make_robot("sim", world=w, scene=scene, seed=seed, noise=self.noise)
+        with robot:
+            ctx = TaskContext.start(w, robot, source, max_sim_seconds=self.max_sim_seconds, on_event=on_event)
+            result = task.run(ctx, plan)
             final_frame = robot.depth_frame()
-            true_pose = robot.ground_truth_pose
+            true_pose = getattr(robot, "ground_truth_pose", None)
         # ---- evaluation (ground truth from here on)
         obj = object_name or plan.object
         known = {o.name for o in w.scene(scene).objects}
         visibility = object_visibility(final_frame, obj if obj in known else None)
-        seen = is_visible(visibility)
-        if isinstance(result, FetchResult) and not result.success:
+        seen = is_visible(visibility) if final_frame.hit_ids is not None else result.success
+        if not result.success:
             failure = result.status.value
         elif not seen:
             failure = ExecutionStatus.NOT_VISIBLE.value
@@ -155,7 +161,8 @@ class FetchRunner:
                          "target_furniture": result.target_furniture, "recovered": result.recovered},
             "final_pose": None if result.final_pose is None else
             [round(result.final_pose.x, 3), round(result.final_pose.y, 3), round(result.final_pose.theta, 4)],
-            "true_final_pose": [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
+            "true_final_pose": None if true_pose is None else
+            [round(true_pose.x, 3), round(true_pose.y, 3), round(true_pose.theta, 4)],
             "target_position": None if placed is None else [round(placed.x, 3), round(placed.y, 3)],
             "target_visible": visibility,
             "seen": [s.to_dict() for s in result.seen],

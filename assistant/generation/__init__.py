@@ -5,11 +5,10 @@
 * :class:`GenerationModel`, :func:`load_generation_model` — co-occurrence weights, chunk texts
   ``P(text, type | RDT)`` and the six chunk relations learned from the annotated corpus.
 * :func:`select_content` (equation 2, exact over subsets), :func:`realize` (Algorithm 1).
-* :class:`ObjectSearch`, :func:`search_for`, :class:`SearchResult` — the robot's search, room
-  by room, with its own furniture perception and object detector; then
-  :meth:`Describer.describe_search` composes the answer from the environment model it built.
-* :class:`ObjectSighting` — what a search reports; :func:`oracle_sighting` and
-  :func:`oracle_environment` read it from the world file (the labelled ``oracle`` search, and
+* :meth:`Describer.describe_search` composes the answer from the environment model the robot's
+  search (:class:`~assistant.executor.search.SearchTask`) built.
+* :func:`oracle_sighting` and :func:`oracle_environment` read a
+  :class:`~assistant.perception.objects.Sighting` and the furniture from the world file (the labelled ``oracle`` search, and
   the evaluation's ground truth).
 """
 
@@ -22,18 +21,16 @@ from assistant.generation.types import (
     ChunkNode,
     ContentNode,
     GeneratedDescription,
-    ObjectSighting,
 )
 
 __all__ = [
-    "STYLES", "ChunkNode", "ContentNode", "GeneratedDescription", "ObjectSighting",
+    "STYLES", "ChunkNode", "ContentNode", "GeneratedDescription",
     # lazily imported
     "ALPHA", "Candidate", "Describer", "GenerationModel", "GenerationModelNotFittedError",
     "candidate_nodes", "known_objects", "load_generation_model", "not_found_description",
     "objective_values", "OracleCase", "oracle_cases", "oracle_environment", "oracle_sighting", "realize", "repeated_phrases",
     "route_nodes", "select_content", "style_for_question",
-    "ObjectSearch", "SearchResult", "room_order", "room_only_description", "search_for",
-    "to_generation_sighting",
+    "room_only_description",
 ]
 
 _LAZY = {
@@ -56,11 +53,6 @@ _LAZY = {
     "realize": "assistant.generation.realize",
     "repeated_phrases": "assistant.generation.realize",
     "route_nodes": "assistant.generation.route",
-    "ObjectSearch": "assistant.generation.search",
-    "SearchResult": "assistant.generation.search",
-    "room_order": "assistant.generation.search",
-    "search_for": "assistant.generation.search",
-    "to_generation_sighting": "assistant.generation.search",
     "room_only_description": "assistant.generation.describer",
 }
 

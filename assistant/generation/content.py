@@ -91,7 +91,7 @@ def support_of(sighting, furniture: list) -> object | None:
     """The furniture entity the object lies on: the one whose footprint is nearest to the
     object's position (within 0.5 m), preferring its room."""
     best, best_d = None, 0.5
-    p = np.array([sighting.x, sighting.y])
+    p = np.array([sighting.x_m, sighting.y_m])
     for ent in furniture:
         if not len(ent.cells):
             continue

@@ -2,7 +2,7 @@
 
 :class:`Describer` runs content selection (:mod:`assistant.generation.content`) and surface
 realization (:mod:`assistant.generation.realize`) with a :class:`GenerationModel` learned from
-the corpus. The search that produces the :class:`ObjectSighting` is separate: today the
+the corpus. The search that produces the :class:`Sighting` is separate: today the
 command line uses the *oracle search* (:func:`oracle_sighting`, the world file's position)
 and the *oracle environment* (:func:`oracle_environment`, the world file's furniture); the
 robot's search with perception will produce the same types.
@@ -15,7 +15,8 @@ from collections.abc import Iterator
 from typing import NamedTuple
 
 from assistant.errors import AssistantError, UnknownNameError
-from assistant.generation.types import STYLES, GeneratedDescription, ObjectSighting
+from assistant.generation.types import STYLES, GeneratedDescription
+from assistant.perception.objects import Sighting
 
 __all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "room_only_description", "known_objects", "not_found_description", "OracleCase", "oracle_cases",
            "oracle_environment", "oracle_sighting", "style_for_question"]
@@ -69,7 +70,7 @@ class Describer:
         dir_srv(a, b)
         dist_srv(a, b)
 
-    def describe(self, sighting: ObjectSighting, environment_entities: list, floorplan,
+    def describe(self, sighting: Sighting, environment_entities: list, floorplan,
                  listener_pose=None, style: str = "static") -> GeneratedDescription:
         """Describe ``sighting`` using the furniture in ``environment_entities`` (entities with
         ``name``, ``room`` and cells on one grid) and the floor plan. ``listener_pose``
@@ -90,8 +91,8 @@ class Describer:
         furniture = [e for e in furniture if plausible_size(e)]
         support = support_of(sighting, furniture)
         if support is None:
-            raise AssistantError(f"no furniture under the {sighting.name} at ({sighting.x:.2f}, "
-                                 f"{sighting.y:.2f}) in the environment model; the generator "
+            raise AssistantError(f"no furniture under the {sighting.name} at ({sighting.x_m:.2f}, "
+                                 f"{sighting.y_m:.2f}) in the environment model; the generator "
                                  "describes objects lying on furniture")
         room = support.room or sighting.room
         route = route_nodes(floorplan, listener_pose, support, room) if style == "dynamic" else []
@@ -123,7 +124,7 @@ class Describer:
 
     def describe_search(self, result, floorplan, listener_pose=None, style: str = "static"
                         ) -> GeneratedDescription:
-        """The answer after a sensed search (:class:`~assistant.generation.search.SearchResult`):
+        """The answer after a sensed search (:class:`~assistant.executor.search.SearchResult`):
         composed from the environment model the search built (its perceived furniture), or the
         honest "I looked in … and did not find …" when it was not seen. ``search_seconds`` is
         the search's wall-clock time up to the sighting; the search report (rooms searched,
@@ -166,7 +167,7 @@ def plausible_size(entity) -> bool:
     return extent <= limit
 
 
-def room_only_description(sighting: ObjectSighting, style: str = "static") -> GeneratedDescription:
+def room_only_description(sighting: Sighting, style: str = "static") -> GeneratedDescription:
     """When perception found no furniture under the object: say only its room (true, short)."""
     verb = "are" if sighting.name.endswith("s") and not sighting.name.endswith("ss") else "is"
     where = f" in the {sighting.room}" if sighting.room else " here"
@@ -197,7 +198,7 @@ def known_objects(world=None) -> list[str]:
     return sorted(names)
 
 
-def oracle_sighting(world, scene: str, name: str) -> ObjectSighting | None:
+def oracle_sighting(world, scene: str, name: str) -> Sighting | None:
     """The object's position from the world file (the oracle search), or None when the scene
     has no such object. Raises :class:`UnknownNameError` for a name the robot cannot look for."""
     key = " ".join(name.lower().split())
@@ -205,8 +206,8 @@ def oracle_sighting(world, scene: str, name: str) -> ObjectSighting | None:
     for obj in sc.objects:
         if obj.name.lower() == key:
             room = world.floorplan.room_at(obj.x, obj.y)
-            return ObjectSighting(obj.name, obj.x, obj.y, sc.object_height_m(obj),
-                                  room.name if room else sc.item(obj.on).room, world.start, 0.0)
+            return Sighting(obj.name, obj.x, obj.y, sc.object_height_m(obj),
+                            room=room.name if room else sc.item(obj.on).room, seen_from=world.start)
     known = known_objects(world)
     if key not in known:
         raise UnknownNameError("object", name, known)
@@ -228,7 +229,7 @@ class OracleCase(NamedTuple):
     scene: str
     obj: object  # the PlacedObject
     environment: list
-    sighting: ObjectSighting
+    sighting: Sighting
 
 
 def oracle_cases(world_names, scenes=("original", "modified")) -> Iterator[OracleCase]:

@@ -1,8 +1,6 @@
 """Types of the generation layer: what the search reports, what content selection picks, what
 surface realization builds (dissertation 6.2 II.C–E).
 
-* :class:`ObjectSighting` — one object as the search found it (the detector's report, or the
-  world file in the ``oracle`` search).
 * :class:`ContentNode` — one candidate piece of content (the room, the support, or an RDT node
   such as ``couch-front-table``) with its probability ``P_Γ(y)`` in the environment.
 * :class:`ChunkNode` — one chunk of the generated sentence (text, chunk type) placed in the
@@ -14,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from assistant.geometry import Pose2D
+from assistant.perception.objects import Sighting
 
 #: how "where is my X" finds the object: the robot searches (``sensed``) or the world file
 #: answers (``oracle``, to separate the language from the search)
@@ -23,26 +21,6 @@ SEARCH_MODES = ("sensed", "oracle")
 #: description styles: a static description ("the mug is on the table in front of the couch")
 #: or a how-to-find (dynamic) one from the listener's pose ("go into the living room, turn right…")
 STYLES = ("static", "dynamic")
-
-
-@dataclass(frozen=True)
-class ObjectSighting:
-    """A small object seen by the robot: position (metres, world frame; ``z`` above the floor),
-    the room it is in, the robot pose it was seen from and the time (seconds since the search
-    began)."""
-
-    name: str
-    x: float
-    y: float
-    z: float
-    room: str | None
-    seen_from: Pose2D
-    time_s: float = 0.0
-
-    def to_dict(self) -> dict:
-        p = self.seen_from
-        return {"name": self.name, "x": self.x, "y": self.y, "z": self.z, "room": self.room,
-                "seen_from": [p.x, p.y, p.theta], "time_s": self.time_s}
 
 
 @dataclass
@@ -116,7 +94,7 @@ class GeneratedDescription:
     description: str
     object: str
     style: str = "static"
-    sighting: ObjectSighting | None = None
+    sighting: Sighting | None = None
     selected: list[ContentNode] = field(default_factory=list)
     candidates: list[ContentNode] = field(default_factory=list)
     tree: ChunkNode | None = None
@@ -151,9 +129,10 @@ class GeneratedDescription:
             "style": self.style,
             "nodes": self.nodes,
             "room": room if room else (s.room if s else None),
-            "seen_at": ({"x": s.x, "y": s.y, "z": s.z, "room": s.room,
-                         "seen_from": [s.seen_from.x, s.seen_from.y, s.seen_from.theta],
-                         "time_s": s.time_s} if s else None),
+            "seen_at": ({"x": s.x_m, "y": s.y_m, "z": s.z_m, "room": s.room,
+                         "seen_from": None if s.seen_from is None else
+                         [s.seen_from.x, s.seen_from.y, s.seen_from.theta],
+                         "time_s": s.timestamp_s} if s else None),
             "selected": [n.to_dict() for n in self.selected],
             "candidates": [n.to_dict() for n in self.candidates],
             "objective": self.objective,

@@ -24,15 +24,15 @@ from assistant.perception.features import (
     shape_descriptor,
 )
 from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame
-from assistant.perception.objects import ObjectDetector, ObjectSighting, SimObjectDetector
+from assistant.perception.objects import ObjectDetector, SimObjectDetector, Sighting
 from assistant.perception.orientation import LinearOrientationEstimator, PlaneOrientationEstimator
 from assistant.perception.samples import FurnitureSample, SampleParams, extract_samples
 
 __all__ = [
     "AutoencoderClassifier", "CLASSIFIERS", "Detection", "DetectionResult", "FeatureParams",
     "Floor", "FrameAnalysis", "FrameParams", "FurnitureClassifier", "FurnitureDetector",
-    "FurnitureSample", "LinearOrientationEstimator", "ObjectDetector", "ObjectSighting", "PlaneOrientationEstimator", "SampleParams",
+    "FurnitureSample", "LinearOrientationEstimator", "ObjectDetector", "PlaneOrientationEstimator", "SampleParams",
     "analyse_frame", "category_of", "depth_to_points", "detections_to_entities",
     "estimate_normals", "extract_samples", "find_floor", "normal_histogram",
-    "orientation_features", "shape_descriptor", "SimObjectDetector", "view_subclasses",
+    "orientation_features", "shape_descriptor", "SimObjectDetector", "Sighting", "view_subclasses",
 ]

@@ -33,7 +33,7 @@ from sklearn.ensemble import RandomForestClassifier
 from sklearn.utils.validation import check_is_fitted
 
 #: number of view subclasses per category (Table 3-2)
-SUBCLASS_COUNTS = {"chair": 2, "couch": 3, "bed": 2, "small table": 1, "large table": 1}
+SUBCLASS_COUNTS = {"chair": 2, "couch": 3, "bed": 2, "small table": 1, "large table": 1, "other": 1}
 CLASSIFIERS = ("lsvm", "gsvm", "autoencoder", "forest", "vote")
 
 

@@ -50,6 +50,11 @@ class Floor:
     tilt_rad: float
     roll_rad: float
 
+    @property
+    def plane(self) -> np.ndarray:
+        """``(nx, ny, nz, d)``: the floor as n·p + d = 0 in camera coordinates (n up)."""
+        return np.append(self.normal_camera, self.height_m)
+
     def to_dict(self) -> dict:
         return {"height": round(float(self.height_m), 4),
                 "normal": [round(float(v), 5) for v in self.normal_camera],
@@ -238,7 +243,8 @@ def _support_scores(points: np.ndarray, normals: np.ndarray, d: np.ndarray,
 
 
 def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: float = 0.1,
-               near_m: float = 3.0, seed: int = 0, strong_support: float = 0.2) -> Floor | None:
+               near_m: float = 3.0, seed: int = 0, strong_support: float = 0.2,
+               previous: "Floor | None" = None) -> Floor | None:
     """The floor plane of a camera-frame cloud, or None when no floor is visible.
 
     With a ``mount`` (camera height and tilt), RANSAC runs on the points within ``band_m`` of
@@ -246,6 +252,11 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     fewer than ``strong_support`` of the near points, and always without a mount, the lowest
     large upward plane is also searched for (:func:`_search_floor`), and the lower of the two
     planes wins.
+
+    ``previous`` (the floor found in an earlier frame from the same camera pose) is checked
+    first (:func:`_reuse_floor`): if the points near its plane still hold it, it is refitted to
+    them and nothing is searched; a camera that has moved finds no such support and the floor
+    is found as without it.
 
     All points take part (fitting on a subset, tried for speed with a throw-away change, moved
     the floor of the real frames and changed what was detected; not kept, not reproducible by a
@@ -257,6 +268,10 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     range2 = np.einsum("ij,ij->i", pts, pts)
     near = np.compress(range2 < near_m ** 2, pts, axis=0)
     candidates = []
+    if previous is not None:
+        wider = np.compress(range2 < (near_m + 2.0) ** 2, pts, axis=0)
+        if (found := _reuse_floor(wider, previous)) is not None:
+            return _floor_from_plane(*found, mount)
     if mount is not None:
         nominal = nominal_camera_to_floor(mount)
         # predicted plane in camera coordinates: n = R^T z, d = the camera height
@@ -281,6 +296,26 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
         return None
     plane, inliers = max(supported, key=lambda c: c[0][3])
     return _floor_from_plane(plane, inliers, mount)
+
+
+def _reuse_floor(points: np.ndarray, previous: Floor, keep_share: float = 0.7,
+                 max_shift_m: float = 0.02, max_turn_deg: float = 1.0) -> tuple[np.ndarray, int] | None:
+    """The previous frame's floor refitted (least squares, twice) to this frame's points within
+    the RANSAC distance of it — if they are still at least ``keep_share`` of its inliers and
+    the plane moved by under ``max_shift_m`` and ``max_turn_deg``; else None (search again).
+    No RANSAC and no search: a few vector operations over the cloud."""
+    plane = previous.plane
+    count = 0
+    for _ in range(2):
+        near = np.abs(points @ plane[:3] + plane[3]) < RANSAC_DISTANCE_M
+        count = int(np.count_nonzero(near))
+        if count < max(MIN_FLOOR_POINTS, keep_share * previous.inliers):
+            return None
+        plane = _lsq_plane(np.compress(near, points, axis=0), previous.plane[:3])
+    turn = math.degrees(math.acos(min(1.0, float(plane[:3] @ previous.plane[:3]))))
+    if abs(plane[3] - previous.plane[3]) > max_shift_m or turn > max_turn_deg:
+        return None
+    return plane, count
 
 
 def _floor_from_plane(plane: np.ndarray, inliers: int, mount: CameraMount | None) -> Floor:

@@ -28,8 +28,10 @@ import ast
 import hashlib
 import inspect
 import io
+import logging
 import math
 import textwrap
+import zipfile
 from dataclasses import dataclass, field, fields
 from functools import lru_cache
 from importlib import resources
@@ -61,7 +63,7 @@ class Item:
     name: str
     category: str
     front_offset_rad: float | None
-    source: str  # "study" (catalogue model, simulator mesh) or "other" (instances.yaml)
+    source: str  # "study" (catalogue model), "other" (instances.yaml), "variant" (training_variants.yaml)
 
     def mesh(self):
         if self.source == "study":
@@ -70,7 +72,7 @@ class Item:
             return furniture_mesh(self.name)
         from assistant.perception.instances import instance_mesh
 
-        return instance_mesh(self.name)
+        return instance_mesh(self.name, "training_variants.yaml" if self.source == "variant" else "instances.yaml")
 
 
 def study_items() -> list[Item]:
@@ -86,6 +88,47 @@ def other_items() -> list[Item]:
     return [Item(i.name, i.category, i.front_offset_rad, "other") for i in load_instances().values()]
 
 
+def variant_items() -> list[Item]:
+    """The training variants (``data/training_variants.yaml``): training views only."""
+    from assistant.perception.instances import load_instances
+
+    return [Item(i.name, i.category, i.front_offset_rad, "variant")
+            for i in load_instances("training_variants.yaml").values()]
+
+
+@dataclass(frozen=True)
+class RealSensorNoise:
+    """What a real depth camera adds to the simulator's Kinect model (:class:`KinectNoise`,
+    applied first): ``holes`` — blobs of missing depth (dark or shiny surfaces, IR
+    interference) covering about ``hole_share`` of the image, from a coarse random field
+    (``hole_cell_px`` cells) — plus single missing readings (``dropout``), and flying pixels:
+    a reading next to a depth jump of more than ``edge_jump_m`` becomes, with probability
+    ``flying``, a mix of the two sides' depths (the time-of-flight mixed pixel)."""
+
+    hole_share: float = 0.04
+    hole_cell_px: int = 12
+    dropout: float = 0.02
+    edge_jump_m: float = 0.1
+    flying: float = 0.5
+
+    def apply(self, depth_m: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        from assistant.sim.renderer import KinectNoise
+
+        out = KinectNoise().apply(depth_m, rng)
+        h, w = out.shape
+        c = self.hole_cell_px
+        field_ = rng.random((h // c + 1, w // c + 1))
+        holes = np.kron(field_ < self.hole_share, np.ones((c, c), dtype=bool))[:h, :w]
+        out[holes | (rng.random(out.shape) < self.dropout)] = 0.0
+        right = out[:, 1:]
+        left = out[:, :-1]
+        jump = (np.abs(right - left) > self.edge_jump_m) & (right > 0) & (left > 0)
+        mix = jump & (rng.random(jump.shape) < self.flying)
+        t = rng.random(jump.shape).astype(np.float32)
+        right[mix] = (t * left + (1 - t) * right)[mix]
+        return out
+
+
 class ItemRenderer:
     """Renders depth frames of one mesh standing on an open floor, the robot at the origin."""
 
@@ -97,7 +140,7 @@ class ItemRenderer:
 
         self.intrinsics = intrinsics or training_intrinsics()
         self.mount = mount or CameraMount()
-        self.noise = noise if noise is not None else KinectNoise()
+        self.noise = noise if noise is not None else KinectNoise()  # or RealSensorNoise
         self._mesh = mesh
         self._rays = pixel_rays(self.intrinsics).reshape(-1, 3).astype(np.float32)
         floor = o3d.geometry.TriangleMesh(
@@ -253,6 +296,7 @@ class ViewPlan:
     height_jitter: float = 1.0  # cap on the height scaling (jitter applies to length and width)
     wall: float = 0.0  # chance that a random view has a wall behind the item (homes have walls)
     wall_gap_m: tuple[float, float] = (0.02, 0.3)
+    sensor: str = "kinect"  # "kinect": the simulator's KinectNoise; "real": RealSensorNoise
 
 
 def _views(item: Item, plan: ViewPlan, rng: np.random.Generator):
@@ -303,7 +347,7 @@ def render_database(items: list[Item], plan: ViewPlan, params: FrameParams = Fra
     points = []
     missed = 0
     for n, item in enumerate(items):
-        renderer = ItemRenderer(item.mesh())
+        renderer = ItemRenderer(item.mesh(), noise=RealSensorNoise() if plan.sensor == "real" else None)
         seed_base = int.from_bytes(hashlib.sha256(f"{plan.seed}:{item.name}".encode()).digest()[:4], "little")
         rng = np.random.default_rng(seed_base)
         for v, (pose, scale, direction, dist, facing, on_top, wall) in enumerate(_views(item, plan, rng)):
@@ -320,7 +364,7 @@ def render_database(items: list[Item], plan: ViewPlan, params: FrameParams = Fra
             has_front = item.front_offset_rad is not None
             to_camera = math.atan2(-pose.y, -pose.x)
             rows["X"].append(found.features[k])
-            rows["S"].append(shape_descriptor(sample.points, sample.normals))
+            rows["S"].append(shape_descriptor(sample.points, sample.normals, camera_xy=found.camera_xyz[:2]))
             rows["Q"].append(orientation_features(sample.points, sample.normals, params.features))
             rows["category"].append(item.category)
             rows["item"].append(item.name)
@@ -395,9 +439,10 @@ def _source_fingerprint() -> str:
                          robot_frames.CameraIntrinsics, robot_frames.CameraMount,
                          robot_frames.pixel_rays, robot_frames.camera_to_world_matrix,
                          robot_frames.camera_to_base_matrix,
-                         training_intrinsics, ItemRenderer, _views, _object_names,
+                         training_intrinsics, ItemRenderer, RealSensorNoise, _views, _object_names,
                          render_database, _item_sample).encode())
-    for pkg, name in (("assistant.world", "catalogue.yaml"), ("assistant.perception", "instances.yaml")):
+    for pkg, name in (("assistant.world", "catalogue.yaml"), ("assistant.perception", "instances.yaml"),
+                      ("assistant.perception", "training_variants.yaml")):
         h.update((resources.files(pkg) / "data" / name).read_bytes())
     return h.hexdigest()
 
@@ -417,8 +462,9 @@ def cached_database(name: str, items: list[Item], plan: ViewPlan,
     if path.exists():
         try:
             return Database.from_bytes(path.read_bytes())
-        except (OSError, ValueError, KeyError):
-            pass  # a damaged cache file is rebuilt
+        except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile) as error:
+            logging.getLogger(__name__).warning(  # a damaged cache file is rebuilt
+                "ignoring unreadable view database %s (%s); rendering it again", path, error)
     db = render_database(items, plan, params)
     atomic_write_bytes(path, db.to_bytes())
     return db

@@ -10,6 +10,25 @@ import numpy as np
 from assistant.errors import AssistantError
 from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
 
+#: largest depth image read, in pixels (a Kinect frame has 0.3 million; 4096 × 4096 = 16.8 million)
+MAX_PIXELS = 4096 * 4096
+#: image modes that hold 16-bit (or wider) integer depth; 8-bit grey ("L") is a picture, not depth
+DEPTH_MODES = ("I;16", "I;16B", "I;16L", "I;16N", "I")
+#: the camera mount values accepted (metres above the floor, degrees of pitch down)
+CAMERA_HEIGHT_RANGE_M = (0.05, 3.0)
+TILT_RANGE_DEG = (-90.0, 90.0)
+
+
+def check_mount(camera_height_m: float | None, tilt_deg: float | None) -> None:
+    """Refuse a camera height or tilt that is not a finite number in its range."""
+    for name, value, (low, high), unit in (("--camera-height", camera_height_m, CAMERA_HEIGHT_RANGE_M, "m"),
+                                           ("--tilt", tilt_deg, TILT_RANGE_DEG, "degrees")):
+        if value is None:
+            continue
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                or not low <= value <= high:
+            raise AssistantError(f"{name} must be a number from {low:g} to {high:g} {unit}, got {value!r}")
+
 
 def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, float],
                    depth_scale: float, *, camera_height_m: float | None = None,
@@ -24,13 +43,25 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     """
     from PIL import Image, UnidentifiedImageError
 
+    check_mount(camera_height_m, tilt_deg)
     file = Path(path)
     try:
-        with Image.open(file) as im:
+        with Image.open(file) as im:  # reads the header only: size and mode are checked first
+            width, height = im.size
+            if width * height > MAX_PIXELS:
+                raise AssistantError(f"{file}: {width}×{height} pixels is more than a depth camera "
+                                     f"gives (at most {MAX_PIXELS:,} pixels); give a depth frame")
+            if im.mode not in DEPTH_MODES:
+                raise AssistantError(f"{file}: a {im.mode!r} image is not depth; give a 16-bit "
+                                     "single-channel PNG (depth units, 0 for no reading)")
             raw = np.asarray(im)
     except FileNotFoundError:
         raise AssistantError(f"{file}: no such depth image") from None
-    except (UnidentifiedImageError, OSError) as error:
+    except IsADirectoryError:
+        raise AssistantError(f"{file} is a folder; give a depth PNG file") from None
+    except Image.DecompressionBombError as error:
+        raise AssistantError(f"{file}: refused, too many pixels for a depth frame ({error})") from None
+    except (UnidentifiedImageError, OSError, ValueError, SyntaxError) as error:
         raise AssistantError(f"{file}: not a readable image ({error})") from None
     if raw.ndim != 2:
         raise AssistantError(f"{file}: expected a single-channel (16-bit) depth image, "

@@ -17,12 +17,21 @@ import numpy as np
 
 from assistant.geometry import GridMap, Pose2D, wrap_angle
 from assistant.perception.classifiers import category_of
-from assistant.perception.features import orientation_features, shape_descriptor
+from assistant.perception.features import (
+    estimate_normals,
+    normal_histogram,
+    orientation_features,
+    shape_descriptor,
+)
 from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame
+from assistant.perception.instances import OTHER
+from assistant.perception.regroup import range_cut, regroup
 from assistant.robot.frames import DepthFrame
 from assistant.world.entity import Entity, EntityKind
 
 ORIENTATION_METHODS = ("plane", "linear")
+#: how many camera poses' floors the detector remembers (``analyse(pose_key=…)``)
+FLOOR_MEMORY = 16
 
 
 @dataclass(frozen=True, eq=False)
@@ -36,7 +45,11 @@ class Detection:
     showed: the floor area seen over the category's typical footprint, halved for a partial
     view. Fusion weighs a detection by ``confidence × coverage`` (:attr:`weight`): a glimpse of
     a couch's arm or a view cut by the image border says less about the item's centre and
-    category than a whole view.
+    category than a whole view. ``unsure``: the classifier's confidence is under the
+    detector's ``sure_confidence`` — a caller should look again from another pose before acting
+    on it (a bed it is unsure of may be a desk); ``beyond_range``: the sample reaches the far
+    end of the sample range, so the item may go on beyond what was seen (a partial view, kept
+    apart from ``partial`` — the image border — which fusion reads).
     """
 
     category: str
@@ -50,6 +63,8 @@ class Detection:
     partial: bool
     frame: str
     coverage: float = 1.0
+    unsure: bool = False
+    beyond_range: bool = False
 
     @property
     def weight(self) -> float:
@@ -62,7 +77,30 @@ class Detection:
                 "facing": None if self.facing is None else round(float(self.facing), 4),
                 "confidence": round(float(self.confidence), 3), "height": round(self.height_m, 3),
                 "cells": int(len(self.cells_xy)), "partial": bool(self.partial),
-                "coverage": round(float(self.coverage), 3)}
+                "coverage": round(float(self.coverage), 3), "unsure": bool(self.unsure),
+                "beyond_range": bool(self.beyond_range)}
+
+
+@dataclass(frozen=True, eq=False)
+class UnknownItem:
+    """Something standing on the floor that the detector would not name: ``best`` is the
+    classifier's choice (a category, or "other": a bench, dresser or other thing that is none of
+    the five) and ``probability`` its confidence; ``why`` is "other", "unsure" (under
+    ``min_confidence``) or "no surface" (tall, with no seat, mattress or top). Same frame and
+    units as :class:`Detection`."""
+
+    best: str
+    probability: float
+    x: float
+    y: float
+    height_m: float
+    cells: int
+    why: str
+
+    def to_dict(self) -> dict:
+        return {"category": "unknown", "best": self.best, "probability": round(float(self.probability), 3),
+                "x": round(self.x, 3), "y": round(self.y, 3), "height": round(self.height_m, 3),
+                "cells": self.cells, "why": self.why}
 
 
 @dataclass(eq=False)
@@ -73,6 +111,7 @@ class DetectionResult:
     analysis: FrameAnalysis
     reason: str | None
     timings_ms: dict = field(default_factory=dict)
+    unknown: list[UnknownItem] = field(default_factory=list)
 
     @property
     def floor(self):
@@ -83,7 +122,8 @@ class DetectionResult:
         out = {"detections": [d.to_dict() for d in self.detections],
                "floor": floor.to_dict() if floor is not None else None,
                "samples": len(self.analysis.samples),
-               "frame": self.detections[0].frame if self.detections else None}
+               "frame": self.detections[0].frame if self.detections else None,
+               "unknown": [u.to_dict() for u in self.unknown]}
         if self.reason:
             out["reason"] = self.reason
         return out
@@ -95,7 +135,11 @@ class FurnitureDetector:
     ``models`` is a :class:`~assistant.perception.models.PerceptionModels` (default: the cached
     models trained on the simulator's database, trained on first use); ``orientation`` picks
     the estimator ("plane" — this product's, default — or "linear", Table 3-3);
-    ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains);
+    ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains) —
+    they and the samples it calls ``other`` (benches, dressers) are reported as
+    :class:`UnknownItem`; a detection under ``sure_confidence`` is marked ``unsure``;
+    ``regroup`` joins a bed cut by its footboard's shadow and splits a night stand off a bed's
+    side when the classifier confirms it (:mod:`assistant.perception.regroup`);
     a sample taller than ``tall_m`` with under ``min_surface_share`` of its points on upward
     surfaces 0.3–0.75 m high (seat, mattress, table top) is not furniture of any category —
     measured on real frames, these are shelves, wardrobes and water heaters the classifier
@@ -105,7 +149,8 @@ class FurnitureDetector:
 
     def __init__(self, models=None, orientation: str = "plane", params: FrameParams | None = None,
                  min_confidence: float = 0.45, min_height_m: float = 0.3, tall_m: float = 1.3,
-                 min_surface_share: float = 0.05, weigh_coverage: bool = True):
+                 min_surface_share: float = 0.05, weigh_coverage: bool = True,
+                 sure_confidence: float = 0.7, regroup: bool = True):
         if orientation not in ORIENTATION_METHODS:
             from assistant.errors import UnknownNameError
 
@@ -122,48 +167,101 @@ class FurnitureDetector:
         self.tall_m = tall_m
         self.min_surface_share = min_surface_share
         self.weigh_coverage = weigh_coverage
+        self.sure_confidence = sure_confidence
+        self.regroup = regroup
+        self._floors: dict = {}  # pose key → the floor plane last found from that pose
 
-    def analyse(self, frame: DepthFrame, use_mount: bool = True) -> DetectionResult:
+    def analyse(self, frame: DepthFrame, use_mount: bool = True, pose_key=None) -> DetectionResult:
         """Detections of a frame with the floor and the reason when there are none; never raises
-        on bad depth (empty, NaN, no floor, a wall filling the view)."""
+        on bad depth (empty, NaN, no floor, a wall filling the view).
+
+        ``pose_key`` (any hashable value naming the camera's pose, e.g. a recording's pose id
+        or a robot pose that has not changed) reuses the floor found in the last frame with the
+        same key as the prediction, checked against this frame's points (``cloud.find_floor``):
+        a camera that has not moved skips the floor search."""
         t0 = time.perf_counter()
-        analysis = analyse_frame(frame, self.params, use_mount=use_mount)
+        previous = self._floors.get(pose_key) if pose_key is not None else None
+        analysis = analyse_frame(frame, self.params, use_mount=use_mount, previous_floor=previous)
+        if pose_key is not None and analysis.floor is not None:
+            self._floors.pop(pose_key, None)
+            self._floors[pose_key] = analysis.floor
+            while len(self._floors) > FLOOR_MEMORY:
+                self._floors.pop(next(iter(self._floors)))
         t1 = time.perf_counter()
         if not analysis.samples:
             return DetectionResult([], analysis, analysis.reason,
                                    {**analysis.timings_ms, "total": (t1 - t0) * 1e3})
-        shapes = np.array([shape_descriptor(s.points, s.normals) for s in analysis.samples])
-        X = np.hstack([analysis.features, shapes])
-        subclasses, confidence = self.models.classifier.predict_with_confidence(X)
-        pose = frame.robot_pose
+        cam = analysis.camera_xyz
+        shapes = [shape_descriptor(s.points, s.normals, camera_xy=cam[:2]) for s in analysis.samples]
+        subclasses, confidence = self.models.classifier.predict_with_confidence(
+            np.hstack([analysis.features, np.array(shapes)]))
+        samples, labels = list(analysis.samples), [(str(a), float(b)) for a, b in zip(subclasses, confidence)]
+        for sample, shape in zip(samples, shapes):
+            sample.info["shape"] = shape
+        if self.regroup:
+            samples, labels, notes = regroup(samples, labels, [float(sh[43]) for sh in shapes], cam,
+                                             lambda parts: self._classify(parts, cam))
+            if notes:
+                analysis.stats["regrouped"] = notes
+        out, unknown = self._detections(samples, labels, cam, frame.robot_pose)
+        t2 = time.perf_counter()
+        reason = None if out else f"{len(samples)} sample(s), none recognised as furniture"
+        return DetectionResult(out, analysis, reason, {**analysis.timings_ms,
+                                                       "classify": (t2 - t1) * 1e3,
+                                                       "total": (t2 - t0) * 1e3}, unknown)
+
+    def _classify(self, samples: list, camera_xyz: np.ndarray) -> list[tuple[str, float]]:
+        """(subclass, confidence) of samples made by regrouping (normals, M_h and shape
+        descriptor computed here; the shape kept in ``sample.info``)."""
+        rows = []
+        for s in samples:
+            if s.normals is None:
+                s.normals = estimate_normals(s.points, camera_xyz, self.params.features)
+            s.info["shape"] = shape_descriptor(s.points, s.normals, camera_xy=camera_xyz[:2])
+            rows.append(np.hstack([normal_histogram(s.points, s.normals, self.params.features),
+                                   s.info["shape"]]))
+        subs, conf = self.models.classifier.predict_with_confidence(np.array(rows))
+        return [(str(a), float(b)) for a, b in zip(subs, conf)]
+
+    def _detections(self, samples: list, labels: list, cam: np.ndarray, pose
+                    ) -> tuple[list[Detection], list[UnknownItem]]:
+        """Detections of the classified samples, and the unknown items among them."""
         frame_name = "world" if pose is not None else "camera-floor"
         out: list[Detection] = []
-        dropped = 0
-        for sample, shape, sub, conf in zip(analysis.samples, shapes, subclasses, confidence):
-            if conf < self.min_confidence or sample.height_m < self.min_height_m:
-                dropped += 1
+        unknown: list[UnknownItem] = []
+        for sample, (sub, conf) in zip(samples, labels):
+            category = category_of(sub)
+            why = None
+            if sample.height_m < self.min_height_m:
+                why = "low"
+            elif category == OTHER:
+                why = "other"
+            elif conf < self.min_confidence:
+                why = "unsure"
+            elif not _has_furniture_surface(sample.info["shape"], self.tall_m, self.min_surface_share):
+                why = "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+            if why is not None:
+                if why != "low":
+                    ux, uy = _centre(sample.points[:, :2], None)
+                    if pose is not None:
+                        ux, uy = pose.transform_points(np.array([[ux, uy]]))[0]
+                    unknown.append(UnknownItem(category, conf, float(ux), float(uy),
+                                               float(sample.height_m), len(sample.cells_xy_m), why))
                 continue
-            if not _has_furniture_surface(shape, self.tall_m, self.min_surface_share):
-                dropped += 1  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
-                continue
-            category = category_of(str(sub))
-            facing = self._facing(sample, str(sub), analysis.camera_xyz[:2])
-            cx, cy = _centre(sample.points[:, :2], facing, category, analysis.camera_xyz[:2])
+            facing = self._facing(sample, sub, cam[:2])
+            cx, cy = _centre(sample.points[:, :2], facing, category, cam[:2])
             area = len(sample.cells_xy_m) * self.params.samples.grid_m ** 2
             coverage = view_coverage(area, category, sample.touches_border) if self.weigh_coverage else 1.0
             cells = sample.cells_xy_m
+            beyond = range_cut(sample, self.params.samples.max_forward_m)
             if pose is not None:
                 cx, cy = pose.transform_points(np.array([[cx, cy]]))[0]
                 cells = pose.transform_points(cells)
                 facing = None if facing is None else wrap_angle(facing + pose.theta)
-            out.append(Detection(category, str(sub), float(cx), float(cy), facing,
-                                 float(conf), cells, float(sample.height_m), sample.touches_border,
-                                 frame_name, coverage))
-        t2 = time.perf_counter()
-        reason = None if out else f"{dropped} sample(s), none recognised as furniture"
-        return DetectionResult(out, analysis, reason, {**analysis.timings_ms,
-                                                       "classify": (t2 - t1) * 1e3,
-                                                       "total": (t2 - t0) * 1e3})
+            out.append(Detection(category, sub, float(cx), float(cy), facing, conf, cells,
+                                 float(sample.height_m), sample.touches_border, frame_name, coverage,
+                                 bool(conf < self.sure_confidence), beyond))
+        return out, unknown
 
     def _facing(self, sample, subclass: str, camera_xy) -> float | None:
         if self.orientation == "linear":
@@ -268,7 +366,8 @@ def detections_to_entities(detections: list[Detection], grid: GridMap | None = N
                           cells, d.facing, category=d.category, confidence=d.weight,
                           attributes={"subclass": d.subclass, "x": d.x, "y": d.y,
                                       "classifier_confidence": d.confidence, "coverage": d.coverage,
-                                      "height_m": d.height_m, "partial": d.partial}))
+                                      "height_m": d.height_m, "partial": d.partial,
+                                      "unsure": d.unsure}))
     return out
 
 

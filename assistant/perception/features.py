@@ -110,11 +110,11 @@ def orientation_features(points: np.ndarray, normals: np.ndarray,
 
 
 #: length of :func:`shape_descriptor`
-SHAPE_LENGTH = 2 * 20 + 9
+SHAPE_LENGTH = 2 * 20 + 9 + 2
 
 
 def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: float = 1.0,
-                     bin_m: float = 0.05) -> np.ndarray:
+                     bin_m: float = 0.05, camera_xy=None) -> np.ndarray:
     """Size and height profile of a sample, the same from any side (an addition to M_h).
 
     The share of points per 0.05 m height bin (0–1 m, higher points in the top bin); the share
@@ -124,7 +124,10 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
     points above 75 % of the top: backrest, headboard) its length along its line, the item's
     depth across that line, their ratio, how far it rises above the upward surface (a couch's
     back runs along its long side, a bed's headboard across), and how far off the item's middle
-    it stands (a backrest at the edge, an object on a table in the middle). Metres or shares.
+    it stands (a backrest at the edge, an object on a table in the middle); last, the two
+    cues of :func:`side_cues` seen from ``camera_xy`` (floor frame; the origin if None): how
+    solid the item's near side is under its top surface and how much of it is open below.
+    Metres or shares.
     """
     nbins = int(round(height_max_m / bin_m))
     out = np.zeros(SHAPE_LENGTH)
@@ -167,7 +170,51 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
         across_lo, across_hi = np.percentile(across, [2, 98])
         mid = (across_hi + across_lo) / 2
         out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
+    surface = out[2 * nbins + 3] if out[2 * nbins + 3] > 0 else 0.9 * out[2 * nbins]
+    out[2 * nbins + 9:2 * nbins + 11] = side_cues(points, surface, camera_xy, up)
     return out
+
+
+def side_cues(points: np.ndarray, surface_m: float, camera_xy=None, up: np.ndarray | None = None,
+              bearing_bin_rad: float = 0.03, min_points: int = 2) -> tuple[float, float]:
+    """How an item's near side looks under its top surface at ``surface_m`` (a mattress, seat
+    or table top), seen from ``camera_xy`` (floor frame, metres; the origin if None).
+
+    Along each bearing from the camera (``bearing_bin_rad`` bins) the top's near edge is the
+    nearest point of the surface: within 8 cm of its height and, when ``up`` (a mask of the
+    upward-facing points) is given, facing up — a chair's back standing before a desk top is
+    not its edge. Returns (``solid``, ``open``):
+    the share of bearings with points 8 cm above the floor to 20 cm under the surface within
+    −20…+12 cm (horizontal) of that edge — a bed's, couch's or night stand's closed side — and
+    the share of bearings where the points under the surface lie only farther than 25 cm behind
+    the edge or nowhere — the knee space under a desk or table top, its legs and back panel
+    seen through it. (0, 0) when the surface is under 0.35 m or has no edge in view.
+    """
+    if surface_m < 0.35 or len(points) < 10:
+        return 0.0, 0.0
+    cam = np.zeros(2) if camera_xy is None else np.asarray(camera_xy, dtype=float)[:2]
+    dx, dy = points[:, 0] - cam[0], points[:, 1] - cam[1]
+    rng = np.hypot(dx, dy)
+    b = np.floor(np.arctan2(dy, dx) / bearing_bin_rad).astype(int)
+    b -= b.min()
+    z = points[:, 2]
+    top = np.abs(z - surface_m) < 0.08
+    if up is not None and np.count_nonzero(top & up) >= min_points:
+        top &= up
+    if top.sum() < min_points:
+        return 0.0, 0.0
+    edge = np.full(b.max() + 1, np.inf)
+    np.minimum.at(edge, b[top], rng[top])
+    low = (z > 0.08) & (z < surface_m - 0.2)
+    seen = np.isfinite(edge)
+    gap = rng[low] - edge[b[low]]
+    near = np.bincount(b[low], weights=((gap > -0.2) & (gap < 0.12)).astype(float),
+                       minlength=len(edge))
+    close = np.bincount(b[low], weights=(gap <= 0.25).astype(float), minlength=len(edge))
+    n = max(int(seen.sum()), 1)
+    solid = float(np.sum(seen & (near >= min_points))) / n
+    open_ = float(np.sum(seen & (close < 1))) / n
+    return solid, open_
 
 
 def sample_features(sample: FurnitureSample, camera_xyz: np.ndarray | None = None,

@@ -70,17 +70,19 @@ class FrameAnalysis:
 
 
 def analyse_frame(frame: DepthFrame, params: FrameParams = FrameParams(), *,
-                  use_mount: bool = True) -> FrameAnalysis:
+                  use_mount: bool = True, previous_floor: Floor | None = None) -> FrameAnalysis:
     """Floor, samples and features of one frame.
 
     ``use_mount`` predicts the floor from the frame's mount (camera height and tilt); without
-    it (a frame from disk with unknown height and tilt) the floor is searched for. open3d and
-    numpy run with ``params.threads`` threads meanwhile (see :class:`FrameParams`).
+    it (a frame from disk with unknown height and tilt) the floor is searched for.
+    ``previous_floor`` (the :class:`Floor` of an earlier frame from the same camera pose) is
+    tried before either (``cloud.find_floor``). open3d and numpy run with ``params.threads``
+    threads meanwhile (see :class:`FrameParams`).
     """
     if params.threads is None:
-        return _analyse(frame, params, use_mount)
+        return _analyse(frame, params, use_mount, previous_floor)
     with thread_limit(params.threads):
-        return _analyse(frame, params, use_mount)
+        return _analyse(frame, params, use_mount, previous_floor)
 
 
 _CONTROLLER: list = []
@@ -101,7 +103,8 @@ def thread_limit(threads: int = 1):
     return _CONTROLLER[0].limit(limits=threads)
 
 
-def _analyse(frame: DepthFrame, params: FrameParams, use_mount: bool) -> FrameAnalysis:
+def _analyse(frame: DepthFrame, params: FrameParams, use_mount: bool,
+             previous_floor: Floor | None = None) -> FrameAnalysis:
     t0, c0 = time.perf_counter(), time.process_time()
     empty = np.zeros((0, params.features.length))
     nothing = np.zeros(3)
@@ -128,7 +131,7 @@ def _analyse(frame: DepthFrame, params: FrameParams, use_mount: bool) -> FrameAn
         return FrameAnalysis(None, [], empty, nothing,
                              f"too few depth readings ({len(pts)} points within {params.max_range_m} m)")
     floor = find_floor(pts, frame.mount if use_mount else None, band_m=params.floor_band_m,
-                       near_m=params.floor_near_m)
+                       near_m=params.floor_near_m, previous=previous_floor)
     t2, c2 = time.perf_counter(), time.process_time()
     if floor is None:
         return FrameAnalysis(None, [], empty, nothing, "no floor visible",

@@ -23,6 +23,7 @@ from assistant.perception.database import (
     code_digest,
     database_key,
     study_items,
+    variant_items,
 )
 from assistant.perception.orientation import LinearOrientationEstimator, PlaneOrientationEstimator
 
@@ -36,14 +37,34 @@ TRAINING_PLANS = (ViewPlan(grid=False, random_per_item=40, jitter=0.12, seed=1, 
                   ViewPlan(grid=False, random_per_item=40, jitter=0.20, seed=11, objects=0.5, wall=0.6),
                   ViewPlan(grid=False, random_per_item=40, jitter=0.30, seed=13, objects=0.5, wall=0.6,
                            distance_range_m=(1.0, 4.0)))
+#: the training variants' views (``data/training_variants.yaml``: desks with monitors, store beds
+#: with footboards, night stands, benches and dressers as ``other``), half of them with the real
+#: sensor's holes and flying pixels (``RealSensorNoise``), and the study models once more with
+#: that noise; six in ten against a wall
+VARIANT_PLANS = (ViewPlan(grid=False, random_per_item=30, jitter=0.12, seed=21, wall=0.6),
+                 ViewPlan(grid=False, random_per_item=30, jitter=0.2, seed=23, wall=0.6, sensor="real",
+                          distance_range_m=(1.3, 4.0)))
+REAL_SENSOR_STUDY_PLAN = ViewPlan(grid=False, random_per_item=20, jitter=0.2, seed=17, objects=0.5,
+                                  wall=0.6, sensor="real")
 DEFAULT_METHOD = "gsvm"
 DEFAULT_FEATURES = "mh+shape"
 
 
-def training_database(plans=TRAINING_PLANS, items=None) -> Database:
-    """The training views (rendered once, then read from the cache)."""
+def training_database(plans=TRAINING_PLANS, items=None, variants: bool = True) -> Database:
+    """The training views (rendered once, then read from the cache): the study models' by
+    ``plans``, and with ``variants`` the training variants' and the study models' with the real
+    sensor's noise."""
+    return Database.concat([cached_database(name, its, plan) for name, its, plan in _parts(plans, items, variants)])
+
+
+def _parts(plans, items, variants: bool) -> list:
+    """(database name, items, plan) of each part of the training database."""
     items = items if items is not None else study_items()
-    return Database.concat([cached_database(f"train{i}", items, plan) for i, plan in enumerate(plans)])
+    parts = [(f"train{i}", items, plan) for i, plan in enumerate(plans)]
+    if variants:
+        parts += [(f"variants{i}", variant_items(), plan) for i, plan in enumerate(VARIANT_PLANS)]
+        parts.append(("train-real", items, REAL_SENSOR_STUDY_PLAN))
+    return parts
 
 
 def classifier_input(db: Database) -> np.ndarray:
@@ -72,12 +93,11 @@ def fit_models(db: Database, method: str = DEFAULT_METHOD, features: str = DEFAU
 
 
 def models_key(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
-               plans=TRAINING_PLANS, items=None) -> str:
+               plans=TRAINING_PLANS, items=None, variants: bool = True) -> str:
     """Cache key of the trained models: the training databases' keys (their code and data),
     the classifier and orientation code (by syntax tree, so comments and docstrings do not
     count) and the settings. The same inputs give the same key in every process."""
-    items = items if items is not None else study_items()
-    keys = [database_key(f"train{i}", items, plan) for i, plan in enumerate(plans)]
+    keys = [database_key(name, its, plan) for name, its, plan in _parts(plans, items, variants)]
     return hashlib.sha256(repr((keys, method, features, _training_code())).encode()).hexdigest()[:16]
 
 
@@ -90,13 +110,12 @@ def _training_code() -> str:
 
 
 def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
-                   plans=TRAINING_PLANS, items=None) -> PerceptionModels:
+                   plans=TRAINING_PLANS, items=None, variants: bool = True) -> PerceptionModels:
     """The models trained on the training database, cached by a hash of their inputs."""
-    items = items if items is not None else study_items()
-    key = models_key(method, features, plans, items)
+    key = models_key(method, features, plans, items, variants)
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
-    if (models := read_cache(path)) is not None:
+    if (models := read_cache(path, PerceptionModels)) is not None:
         return models
-    models = fit_models(training_database(plans, items), method, features)
+    models = fit_models(training_database(plans, items, variants), method, features)
     write_cache(path, models)
     return models

@@ -22,37 +22,51 @@ import numpy as np
 from assistant.geometry import Pose2D
 from assistant.robot.frames import DepthFrame, camera_to_world_matrix, pixel_rays
 
-__all__ = ["ObjectDetector", "ObjectSighting", "SimObjectDetector"]
+__all__ = ["ObjectDetector", "SimObjectDetector", "Sighting"]
 
 
 @dataclasses.dataclass(frozen=True)
-class ObjectSighting:
-    """One object seen in one frame.
+class Sighting:
+    """One object seen: the one sighting type of the product, from the detector to the memory.
 
-    ``x_m``/``y_m``/``z_m``: world-frame position of the object's visible surface (mean of its
-    pixels' points); ``distance_m``: median depth of its pixels; ``pixels``: how many;
-    ``timestamp_s``: the frame's time stamp.
+    The detector fills ``x_m``/``y_m``/``z_m`` (world-frame position of the object's visible
+    surface: the mean of its pixels' points), ``distance_m`` (median depth of its pixels),
+    ``pixels`` (how many) and ``timestamp_s`` (the frame's robot-clock time stamp). A task
+    *places* it (:func:`assistant.executor.sightings.place_sightings`): ``room`` (floor-plan
+    room name) and the perceived furniture it lies on (``furniture_id`` /
+    ``furniture_category``, None when on nothing the robot has found); a search adds
+    ``seen_from``, the robot pose of the frame. A sighting read from a world file (the oracle
+    search) has no pixels and distance 0.
     """
 
     name: str
     x_m: float
     y_m: float
-    z_m: float
-    distance_m: float
-    pixels: int
-    timestamp_s: float
+    z_m: float = 0.0
+    distance_m: float = 0.0
+    pixels: int = 0
+    timestamp_s: float = 0.0
+    room: str | None = None
+    furniture_id: str | None = None
+    furniture_category: str | None = None
+    seen_from: Pose2D | None = None
 
     def to_dict(self) -> dict:
-        return {"name": self.name, "x": round(self.x_m, 3), "y": round(self.y_m, 3),
-                "z": round(self.z_m, 3), "distance": round(self.distance_m, 3),
-                "pixels": self.pixels, "timestamp": round(self.timestamp_s, 3)}
+        out = {"name": self.name, "x": round(self.x_m, 3), "y": round(self.y_m, 3),
+               "z": round(self.z_m, 3), "distance": round(self.distance_m, 3),
+               "pixels": self.pixels, "timestamp": round(self.timestamp_s, 3),
+               "room": self.room, "furniture_id": self.furniture_id, "furniture": self.furniture_category}
+        if self.seen_from is not None:
+            p = self.seen_from
+            out["seen_from"] = [p.x, p.y, p.theta]
+        return out
 
 
 @runtime_checkable
 class ObjectDetector(Protocol):
     """Anything that reports the small objects visible in a depth (or RGB-D) frame."""
 
-    def detect(self, frame: DepthFrame) -> list[ObjectSighting]: ...
+    def detect(self, frame: DepthFrame) -> list[Sighting]: ...
 
 
 class SimObjectDetector:
@@ -84,7 +98,7 @@ class SimObjectDetector:
         """A detector for the objects placed in a :class:`~assistant.world.Scene`."""
         return cls([obj.name for obj in scene.objects], **params)
 
-    def detect(self, frame: DepthFrame) -> list[ObjectSighting]:
+    def detect(self, frame: DepthFrame) -> list[Sighting]:
         """The recognisable objects in ``frame``; empty when the frame has no hit ids (a real
         camera's frame: use a real detector there)."""
         if frame.hit_ids is None or not self.names:
@@ -116,6 +130,6 @@ class SimObjectDetector:
             points = rays[mask].astype(np.float64) * depth[:, None]
             world = points @ to_world[:3, :3].T + to_world[:3, 3]
             x, y, z = world.mean(axis=0)
-            sightings.append(ObjectSighting(name, float(x), float(y), float(z), distance, pixels,
-                                            float(frame.timestamp_s)))
+            sightings.append(Sighting(name, float(x), float(y), float(z), distance, pixels,
+                                      float(frame.timestamp_s)))
         return sorted(sightings, key=lambda s: s.name)

@@ -1,9 +1,14 @@
 """Scoring the detector on real depth frames from a folder a user gives (``--realdata PATH``).
 
-The product never ships these files; it reads them in place. Known folder layouts (depth
-units, intrinsics, labels) are described here so ``assistant eval perception --realdata PATH``
-can score each: SUN RGB-D (3D boxes with a gravity frame ``Rtilt``), and frames with visual 2D
-boxes (NYU living room, Kinect v2 living room, TUM office), and negatives (NYU basement).
+The product never ships these files; it reads them in place. ``--realdata PATH`` is a folder
+of sub-folders (or one such sub-folder), each holding depth PNGs and their labels in one of three
+label layouts: ``sun`` (SUN RGB-D: ``<id>_boxes.json`` with 3D boxes and the gravity frame
+``Rtilt``, optionally ``<id>_boxmask.png``), ``boxes2d`` (``annotations_visual.json``: 2D boxes
+with a category each) and ``negative`` (no furniture near the camera: every bed or couch is
+false). A sub-folder says how to read it in a ``frames.json`` (:func:`folder_spec`): its depth
+files, intrinsics, metres per depth unit, invalid raw values, label layout and the nearest
+valid depth. The five folders of ``../shared/realdata`` need none: their layouts are known
+here (:data:`FOLDERS`). docs/perception.md says how to add frames of other public datasets.
 """
 
 from __future__ import annotations
@@ -26,6 +31,10 @@ FOLDERS = {
     "nyu_basement_metric3d": ([f"sync_depth_{i}.png" for i in ("00000", "00050", "00100")],
                               (518.8579, 519.4696, 325.5825, 253.7362), 1e-3, (65535,), "negative"),
 }
+LABELS = ("sun", "boxes2d", "negative", "none")
+#: known folders whose nearest valid reading is not the sensor's (the Kinect v2 frame's flying
+#: pixels under 0.5 m, as its README says)
+MIN_DEPTH_M = {"kinect2_livingroom_esanet": 0.5}
 SUN_CATEGORY = {"bed": "bed", "night_stand": "small table"}
 #: a labelled object with less than this share of its depth pixels inside the detector's
 #: sample range (``SampleParams.max_forward_m`` ahead) is reported as out of range
@@ -37,36 +46,81 @@ def _floor_to_camera(floor, xyz: np.ndarray) -> np.ndarray:
     return (np.atleast_2d(xyz) - m[:3, 3]) @ m[:3, :3]
 
 
+def folder_spec(folder: Path) -> dict | None:
+    """How to read a folder of real frames: {"frames": [depth PNG names], "intrinsics": [fx, fy,
+    cx, cy] (pixels, 0-based), "depth_scale_m": metres per unit, "invalid": [raw values that
+    mean no reading], "labels": one of :data:`LABELS`, "min_depth_m": nearer readings are
+    dropped (0)} — from its ``frames.json`` if it has one, else from :data:`FOLDERS` by its
+    name; None for a folder that is neither. A bad ``frames.json`` raises
+    :class:`~assistant.errors.DataFileError` naming the field."""
+    from assistant.errors import DataFileError
+
+    manifest = folder / "frames.json"
+    if manifest.exists():
+        try:
+            data = json.loads(manifest.read_text(encoding="utf-8"))
+            spec = {"frames": [str(f) for f in data["frames"]],
+                    "intrinsics": tuple(float(v) for v in data["intrinsics"]),
+                    "depth_scale_m": float(data["depth_scale_m"]),
+                    "invalid": tuple(int(v) for v in data.get("invalid", (65535,))),
+                    "labels": str(data.get("labels", "none")),
+                    "min_depth_m": float(data.get("min_depth_m", 0.0))}
+        except (ValueError, KeyError, TypeError) as exc:
+            raise DataFileError(str(manifest), "frames.json", f"needs frames, intrinsics (fx, fy, cx, cy) and "
+                                f"depth_scale_m ({type(exc).__name__}: {exc})") from None
+        if len(spec["intrinsics"]) != 4 or spec["labels"] not in LABELS:
+            raise DataFileError(str(manifest), "intrinsics/labels",
+                                f"4 intrinsics and labels one of {', '.join(LABELS)}")
+        return spec
+    if folder.name in FOLDERS:
+        files, k, scale, invalid, labels = FOLDERS[folder.name]
+        return {"frames": files, "intrinsics": k, "depth_scale_m": scale, "invalid": invalid,
+                "labels": labels, "min_depth_m": MIN_DEPTH_M.get(folder.name, 0.0)}
+    return None
+
+
+def real_folders(root: str | Path) -> dict[str, dict]:
+    """Folder name → :func:`folder_spec` of every readable folder of real frames: ``root``
+    itself if it is one, else its sub-folders (sorted; known folders in :data:`FOLDERS` order)."""
+    root = Path(root)
+    if (spec := folder_spec(root)) is not None and (root / "frames.json").exists():
+        return {root.name: {**spec, "path": root}}
+    subs = sorted((p for p in root.iterdir() if p.is_dir()), key=lambda p: (
+        list(FOLDERS).index(p.name) if p.name in FOLDERS else len(FOLDERS), p.name)) if root.is_dir() else []
+    return {p.name: {**spec, "path": p} for p in subs if (spec := folder_spec(p)) is not None}
+
+
 def load_frames(root: str | Path):
-    """``(folder, file name, DepthFrame)`` of every known real frame under ``root`` that exists,
-    read with its folder's depth units, intrinsics and invalid values (the Kinect v2 frame's
-    flying pixels under 0.5 m cleared, as its README says)."""
+    """``(folder, file name, DepthFrame)`` of every real frame of :func:`real_folders` that
+    exists, read with its folder's depth units, intrinsics, invalid values and nearest depth."""
     from assistant.perception.depthfile import load_depth_png
 
-    root = Path(root)
-    for folder, (files, k, scale, invalid, _labels) in FOLDERS.items():
-        for name in files:
-            path = root / folder / name
+    for folder, spec in real_folders(root).items():
+        for name in spec["frames"]:
+            path = spec["path"] / name
             if not path.exists():
                 continue
-            frame, _ = load_depth_png(path, k, scale, invalid_values=invalid)
-            if folder == "kinect2_livingroom_esanet":  # flying pixels under 0.5 m
-                frame.depth_m[frame.depth_m < 0.5] = 0.0
+            frame, _ = load_depth_png(path, spec["intrinsics"], spec["depth_scale_m"],
+                                      invalid_values=spec["invalid"])
+            if spec["min_depth_m"] > 0:
+                frame.depth_m[frame.depth_m < spec["min_depth_m"]] = 0.0
             yield folder, name, frame
 
 
 def evaluate_realdata(root: str | Path, detector) -> dict:
     """Per folder and frame: the floor, the detections, and the scores its labels allow."""
     root = Path(root)
-    out: dict = {"root": str(root), "folders": {f: [] for f in FOLDERS if (root / f).is_dir()}}
+    folders = real_folders(root)
+    out: dict = {"root": str(root), "folders": {f: [] for f in folders}}
     for folder, name, frame in load_frames(root):
-        base, labels = root / folder, FOLDERS[folder][4]
+        base, labels = folders[folder]["path"], folders[folder]["labels"]
         result = detector.analyse(frame, use_mount=False)
         entry = {"file": name, "floor": result.floor.to_dict() if result.floor else None,
                  "detections": [d.to_dict() for d in result.detections],
+                 "unknown": [u.to_dict() for u in result.unknown],
                  "reason": result.reason, "ms": round(result.timings_ms.get("total", 0.0), 1)}
         if labels == "sun":
-            entry.update(_score_sun(base, name[:6], result, frame,
+            entry.update(_score_sun(base, name.removesuffix(".png").removesuffix("_depth"), result, frame,
                                     detector.params.samples.max_forward_m))
         elif labels == "boxes2d":
             entry.update(_score_boxes(base, result, frame))
@@ -86,19 +140,21 @@ def summarise(report: dict) -> dict:
     s = {"frames": len(frames), "floor_found": sum(f["floor"] is not None for f in frames)}
     tally: dict = {}
 
-    def count(what: str, correct: bool, in_range: bool = True) -> None:
+    def count(what: str, correct: bool, in_range: bool = True, partial: bool = False) -> None:
         t = tally.setdefault(what, {"correct": 0, "labelled": 0, "in_range_correct": 0,
-                                    "in_range": 0})
+                                    "in_range": 0, "out_of_range_partial": 0})
         t["labelled"] += 1
         t["correct"] += bool(correct)
         t["in_range"] += bool(in_range)
         t["in_range_correct"] += bool(correct and in_range)
+        t["out_of_range_partial"] += bool(correct and partial and not in_range)
 
     false_elsewhere = 0
     for f in frames:
         taken: set[int] = set()
         for m in f.get("matches", []):
-            count(m["object"], m["correct"], m.get("in_range_share", 1.0) >= IN_RANGE_SHARE)
+            count(m["object"], m["correct"], m.get("in_range_share", 1.0) >= IN_RANGE_SHARE,
+                  m.get("partial", False))
             if m.get("detection") is not None and m["correct"]:
                 taken.add(m["detection"])
         for b in f.get("boxes", []):
@@ -159,6 +215,7 @@ def _score_sun(base: Path, frame_id: str, result, frame, range_m: float) -> dict
         if best is not None and np.linalg.norm(best[1][:2] - gt) < 1.0:
             d, centre, yaw, index = best
             row.update({"detected": d.category, "detection": index, "correct": d.category == wanted,
+                        "partial": bool(d.partial or d.beyond_range),
                         "position_error_m": round(float(np.linalg.norm(centre[:2] - gt)), 3)})
             if yaw is not None and wanted == "bed":
                 err = abs((yaw - obj["yaw_upright_rad"] + math.pi) % (2 * math.pi) - math.pi)

@@ -6,7 +6,9 @@
 model parameters and the model code. An RDT with no demonstrations falls back to a trained
 model with the same direction and the same kind of reference (robot, furniture, room, wall),
 then one with the same direction, then one with the same kind of reference; ties go to the
-RDT earlier in Table 5-1. ``model(rdt)`` says which model it used.
+RDT earlier in Table 5-1. ``model(rdt)`` says which model it used. With ``taught=True`` the
+demonstrations the user taught (:func:`assistant.policy.taught.taught_directory`, never the
+held-back ones) are trained on too; the evaluations leave them out.
 """
 
 from __future__ import annotations
@@ -41,19 +43,30 @@ class ModelChoice:
 class PolicyLibrary:
     """Policy models of every demonstrated RDT (``directory``: demonstration files)."""
 
-    def __init__(self, directory: str | Path | None = None, use_cache: bool = True, **model_params):
+    def __init__(self, directory: str | Path | None = None, use_cache: bool = True, taught: bool = False,
+                 **model_params):
         self.directory = Path(directory) if directory is not None else DEFAULT_DIRECTORY
+        self.taught_directory: Path | None = None
+        if taught:
+            from assistant.policy.taught import taught_directory
+
+            self.taught_directory = taught_directory()
         self.use_cache = use_cache
         self.model_params = model_params
         self._models: dict[str, PolicyModel] | None = None
         self.cache_path: Path | None = None
         self.loaded_from_cache = False
 
+    def _directories(self) -> list[Path]:
+        extra = self.taught_directory
+        return [self.directory] + ([extra] if extra is not None and extra.is_dir() else [])
+
     def _key(self) -> str:
         h = hashlib.sha256()
-        for path in sorted(self.directory.rglob("*.json")):
-            h.update(str(path.relative_to(self.directory)).encode())
-            h.update(path.read_bytes())
+        for n, directory in enumerate(self._directories()):
+            for path in sorted(directory.rglob("*.json")):
+                h.update(f"{n}:{path.relative_to(directory)}".encode())
+                h.update(path.read_bytes())
         h.update(repr(sorted(self.model_params.items())).encode())
         here = Path(__file__).resolve().parent
         for name in _CODE_FILES:
@@ -74,7 +87,7 @@ class PolicyLibrary:
             if (models := read_cache(self.cache_path, dict)) is not None:
                 self.loaded_from_cache = True
                 return models
-        demos = load_demonstrations(self.directory)
+        demos = [d for directory in self._directories() for d in load_demonstrations(directory)]
         by_rdt: dict[str, list] = {}
         for demo in demos:
             by_rdt.setdefault(demo.rdt, []).append(demo)

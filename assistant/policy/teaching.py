@@ -21,8 +21,11 @@ from assistant.policy.demonstration import Demonstration, environment_from_world
 from assistant.policy.freespace import FreeSpace
 from assistant.policy.keyboard import KEY_COMMANDS, KeyboardSession, normalise_key
 from assistant.policy.rdt import RDT
+from assistant.policy.taught import OutlierCheck, save_taught
 from assistant.policy.teacher import NoInstanceError, teacher_goal
 
+#: the most presses one line may ask for (``w 40``); more is refused, not run for hours
+MAX_KEY_REPEAT = 200
 HELP = "keys: w/↑ forward  s/↓ back  a/← left  d/→ right  x/space stop  q finish+save  Esc abort"
 
 
@@ -32,10 +35,14 @@ class TeachOutcome:
     demonstration: Demonstration | None
     presses: int
     ignored: list[str]
+    check: OutlierCheck | None = None
+    held: bool = False  # saved, but held back until the person confirms it
 
     def to_dict(self) -> dict:
         d = self.demonstration
         return {"saved": None if self.saved is None else str(self.saved), "presses": self.presses,
+                "held": self.held, "name": None if self.saved is None else f"{self.saved.parent.name}/{self.saved.stem}",
+                "check": None if self.check is None or d is None else self.check.describe(d.rdt),
                 "ignored": self.ignored, "rdt": d.rdt if d else None,
                 "frames": len(d.frames) if d else 0,
                 "final_pose": None if d is None else [round(d.last_pose.x, 3), round(d.last_pose.y, 3),
@@ -44,11 +51,15 @@ class TeachOutcome:
 
 
 class Teaching:
-    """One teaching session: the world, the robot, the RDT's reference and target."""
+    """One teaching session: the world, the robot, the RDT's reference and target.
+
+    ``robot``: an unconnected robot to drive (default: the simulator in ``world``/``scene`` at
+    ``start``, made by :func:`~assistant.robot.make_robot`); the session connects and closes it.
+    """
 
     def __init__(self, rdt: str, world: str, scene: str = "original", start=None,
-                 reference: str | None = None, target: str | None = None, seed: int = 0):
-        from assistant.sim import SimRobot
+                 reference: str | None = None, target: str | None = None, seed: int = 0, robot=None):
+        from assistant.robot import make_robot
         from assistant.world import load_world
 
         self.rdt = RDT.parse(rdt)
@@ -62,7 +73,8 @@ class Teaching:
 
                 raise UnknownNameError(f"{role} (furniture, room:NAME or wall:I:ROOM)", ident, sorted(ids))
         start_pose = Pose2D(*start) if start is not None else self.world.start
-        self.robot = SimRobot(self.world, self.scene, start=start_pose, seed=seed)
+        self.robot = robot if robot is not None else make_robot("sim", world=self.world, scene=self.scene,
+                                                                start=start_pose, seed=seed)
         self.robot.connect()
         self.session = KeyboardSession(self.robot)
         self.reference_id, self.target_id = reference, target
@@ -77,6 +89,7 @@ class Teaching:
             self.target_id = target or goal.target_id
         self.presses = 0
         self.ignored: list[str] = []
+        self.accept_outlier = False  # save an outlier among the used demonstrations at once
 
     # ---------------------------------------------------------------- what the teacher sees
     def status_lines(self) -> list[str]:
@@ -113,13 +126,19 @@ class Teaching:
         self.presses += times
 
     def finish(self, out: str | Path | None, teacher: str = "keyboard") -> TeachOutcome:
+        """Save the demonstration: to ``out`` when given, else among the user's taught ones
+        (:func:`assistant.policy.taught.save_taught`; an outlier is held back)."""
+        from assistant.policy.library import DEFAULT_DIRECTORY
+
         self.session.settle(0.5)
         demo = self.session.demonstration(self.rdt.name, self.world.name, self.scene, self.environment,
                                           self.reference_id, self.target_id, None, teacher)
-        path = Path(out) if out else default_path(self.rdt.name, self.world.name, self.scene)
-        demo.save(path)
         self.robot.close()
-        return TeachOutcome(path, demo, self.presses, self.ignored)
+        if out:
+            return TeachOutcome(demo.save(out), demo, self.presses, self.ignored)
+        path, check = save_taught(demo, DEFAULT_DIRECTORY, self.accept_outlier)
+        return TeachOutcome(path, demo, self.presses, self.ignored, check,
+                            held=check.outlier and not self.accept_outlier)
 
     def abort(self) -> TeachOutcome:
         self.robot.close()
@@ -141,6 +160,12 @@ class Teaching:
                 self.ignored.append(text)
                 if echo:
                     echo(f"line {number}: {text!r} is not a key; {HELP}")
+                continue
+            if times > MAX_KEY_REPEAT:
+                self.ignored.append(text)
+                if echo:
+                    echo(f"line {number}: at most {MAX_KEY_REPEAT} presses per line, got {times}; "
+                         "give several lines")
                 continue
             if key == "q":
                 return self.finish(out)
@@ -177,21 +202,27 @@ class Teaching:
         return curses.wrapper(loop)
 
 
-def default_path(rdt: str, world: str, scene: str, directory: Path | None = None) -> Path:
-    """``corpus/demonstrations/<rdt>/<world>-<scene>-keyboard-NN.json`` with the next free NN."""
-    from assistant.policy.library import DEFAULT_DIRECTORY
-
-    folder = (directory or DEFAULT_DIRECTORY) / rdt
-    n = 1
-    while (folder / f"{world}-{scene}-keyboard-{n:02d}.json").exists():
-        n += 1
-    return folder / f"{world}-{scene}-keyboard-{n:02d}.json"
+def check_out_path(out: str | Path | None) -> None:
+    """Refuse an ``--out`` that is a folder (``DIR/``) or whose folder cannot be made."""
+    if out is None:
+        return
+    text = str(out)
+    if not text.strip() or text.endswith(("/", "\\")) or Path(text).is_dir():
+        raise AssistantError(f"--out {text!r} is a folder; give a file name such as {text.rstrip('/') or '.'}/demo.json")
+    if Path(text).suffix.lower() != ".json":
+        raise AssistantError(f"--out {text!r}: a demonstration is a .json file; give a name ending in .json")
 
 
 def run_teaching(rdt: str, world: str, scene: str = "original", start=None, reference=None, target=None,
-                 out=None, stdin=None, interactive: bool | None = None, echo=None) -> TeachOutcome:
+                 out=None, stdin=None, interactive: bool | None = None, echo=None,
+                 accept_outlier: bool = False, robot=None) -> TeachOutcome:
+    """One teaching session driven by keys: a curses view in a terminal, else one key per line
+    of ``stdin``. ``robot``: see :class:`Teaching`; ``accept_outlier``: save a demonstration
+    that ends far from what was learned before without asking."""
+    check_out_path(out)
     stdin = stdin or sys.stdin
-    teaching = Teaching(rdt, world, scene, start, reference, target)
+    teaching = Teaching(rdt, world, scene, start, reference, target, robot=robot)
+    teaching.accept_outlier = accept_outlier
     if interactive is None:
         interactive = stdin.isatty() and sys.stdout.isatty()
     if interactive:

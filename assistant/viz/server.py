@@ -7,6 +7,9 @@ over ZeroMQ. Two things in it do not fit a product that must not leak processes 
   subprocess it starts (``ViewerWindow.server_proc``) lives on until interpreter exit; its
   stdout/stderr pipes are never read after start-up, so a long session can fill them.
 * its ZeroMQ socket has no time-outs: a server that died or never existed blocks forever.
+* its server listens on every network interface and outlives a parent killed with ``kill -9``
+  (it runs in a session of its own). The server started here is :mod:`assistant.viz.loopback`:
+  meshcat's own server bound to 127.0.0.1, ending when its parent ends.
 
 :class:`RecordingWindow` stands in for meshcat's ``ViewerWindow`` behind an ordinary
 ``meshcat.Visualizer``. It keeps the scene tree exactly as the server does (meshcat's own
@@ -22,7 +25,9 @@ import atexit
 import collections
 import contextlib
 import io
+import os
 import subprocess
+import sys
 import threading
 import weakref
 
@@ -39,6 +44,9 @@ __all__ = ["MeshcatServer", "RecordingWindow", "ViewerError"]
 class ViewerError(AssistantError):
     """The meshcat server could not be started or reached."""
 
+
+#: the longest a new server may take to print its address (it imports tornado and meshcat)
+STARTUP_S = 20.0
 
 # Servers this process started and has not yet ended; ended at interpreter exit.
 _LIVE: "weakref.WeakSet[MeshcatServer]" = weakref.WeakSet()
@@ -63,6 +71,34 @@ class _TimedViewerWindow(ViewerWindow):
         self.zmq_socket.connect(self.zmq_url)
 
 
+def _start_loopback_server(timeout_s: float) -> tuple[subprocess.Popen, str]:
+    """Start :mod:`assistant.viz.loopback` (127.0.0.1 only, ends with this process); return the
+    process and its ZeroMQ address."""
+    process = subprocess.Popen(
+        [sys.executable, "-u", "-m", "assistant.viz.loopback", "--parent", str(os.getpid())],
+        stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        start_new_session=True)  # Ctrl-C in a chat does not reach it; close() and the parent watch end it
+    result: dict[str, str] = {}
+
+    def read_url() -> None:
+        for raw in iter(process.stdout.readline, b""):
+            line = raw.decode("utf-8", "replace").strip()
+            if line.startswith("zmq_url="):
+                result["zmq_url"] = line.split("=", 1)[1]
+                return
+
+    reader = threading.Thread(target=read_url, daemon=True)
+    reader.start()
+    reader.join(timeout_s)
+    if "zmq_url" not in result:
+        process.kill()
+        process.wait()
+        detail = process.stderr.read().decode("utf-8", "replace").strip().splitlines()
+        raise RuntimeError(f"the meshcat server did not start within {timeout_s:g} s"
+                           + (f" ({detail[-1]})" if detail else ""))
+    return process, result["zmq_url"]
+
+
 def _drain(stream, tail: collections.deque) -> None:
     """Read a server pipe to its end so the server never blocks on a full pipe."""
     try:
@@ -85,21 +121,24 @@ class MeshcatServer:
         self._threads: list[threading.Thread] = []
         self._closed = False
         window_cls = type("_Window", (_TimedViewerWindow,), {"timeout_ms": int(timeout_s * 1000)})
+        owned = zmq_url is None
         try:
+            if owned:
+                self.process, zmq_url = _start_loopback_server(max(timeout_s, STARTUP_S))
+                _LIVE.add(self)
             with contextlib.redirect_stdout(io.StringIO()):  # meshcat prints the URL; see web_url
-                self._window = window_cls(zmq_url=zmq_url, start_server=zmq_url is None,
-                                          server_args=[])
+                self._window = window_cls(zmq_url=zmq_url, start_server=False, server_args=[])
         except zmq.Again:
+            self.close()
             raise ViewerError(f"no meshcat server answered at {zmq_url} within {timeout_s:g} s; "
                               "start one with `meshcat-server` or leave zmq_url unset to start "
                               "one here") from None
         except (RuntimeError, OSError, zmq.ZMQError) as exc:
+            self.close()
             raise ViewerError(f"could not start a meshcat server: {exc}") from exc
         self.zmq_url: str = self._window.zmq_url
         self.web_url: str = self._window.web_url
-        if zmq_url is None:
-            self.process = self._window.server_proc
-            _LIVE.add(self)
+        if owned:
             for stream in (self.process.stdout, self.process.stderr):
                 thread = threading.Thread(target=_drain, args=(stream, self._tail), daemon=True,
                                           name=f"meshcat-server-{self.process.pid}-drain")
@@ -140,7 +179,7 @@ class MeshcatServer:
         if self._closed:
             return
         self._closed = True
-        with contextlib.suppress(Exception):
+        with contextlib.suppress(Exception):  # no window when the server failed to start
             self._window.zmq_socket.close(linger=0)
         process = self.process
         if process is not None:

@@ -40,6 +40,7 @@ from assistant.errors import DataFileError, UnknownNameError
 from assistant.fileio import atomic_write_text
 from assistant.geometry import Pose2D, angles_close
 from assistant.world.catalogue import load_catalogue
+from assistant.world.sanity import geometry_problems
 from assistant.world.model import (
     Door,
     Floorplan,
@@ -203,12 +204,34 @@ def parse_world(text: str, source: str = "<world>") -> World:
         where = f"line {mark.line + 1}" if mark is not None else ""
         raise WorldFileError(label, where, f"not valid YAML: {getattr(error, 'problem', error)}") from None
     check.mapping(data, "", TOP_SCHEMA)
-    catalogue = load_catalogue()
+    start = check.mapping(data["start"], "start", START_SCHEMA)  # stage 1: start pose
+    floorplan = _parse_floorplan(data, check)  # stage 2: rooms, walls, doors
+    # stage 3: scenes (furniture, then the objects on it)
+    if not isinstance(data["scenes"], dict) or not data["scenes"]:
+        check.fail("scenes", "expected a mapping of scene name → furniture and objects")
+    room_names = set(floorplan.room_names)
+    scenes = {str(name): _parse_scene(str(name), raw, room_names, check)
+              for name, raw in data["scenes"].items()}
+    world = World(
+        name=data["name"],
+        title=data.get("title", ""),
+        floorplan=floorplan,
+        start=Pose2D(start["x"], start["y"], start["heading"]),
+        start_heading_rad=float(start["heading"]),
+        scenes=scenes,
+        source=source,
+    )
+    # stage 4: sizes and places (a house, not just valid YAML)
+    problems = geometry_problems(world)
+    if problems:
+        where, problem = problems[0]
+        more = f" (and {len(problems) - 1} more problem{'s' * (len(problems) > 2)})" if len(problems) > 1 else ""
+        check.fail(where, problem + more)
+    return world
 
-    # stage 1: start pose
-    start = check.mapping(data["start"], "start", START_SCHEMA)
 
-    # stage 2: rooms, walls, doors
+def _parse_floorplan(data: dict, check: "_Checker") -> Floorplan:
+    """The ``rooms``, ``walls`` and ``doors`` sections as a :class:`Floorplan`."""
     rooms: list[Room] = []
     for i, raw in enumerate(check.sequence(data["rooms"], "rooms")):
         r = check.mapping(raw, f"rooms[{i}]", ROOM_SCHEMA)
@@ -235,62 +258,58 @@ def parse_world(text: str, source: str = "<world>") -> World:
             check.fail(f"doors[{i}].width", "expected a positive width in metres")
         doors.append(Door(d["name"], (float(d["centre"][0]), float(d["centre"][1])),
                           float(d["width"]), (d["connects"][0], d["connects"][1])))
+    return Floorplan(tuple(rooms), tuple(walls), tuple(doors))
 
-    # stage 3: scenes (furniture, then the objects on it)
-    if not isinstance(data["scenes"], dict) or not data["scenes"]:
-        check.fail("scenes", "expected a mapping of scene name → furniture and objects")
-    scenes: dict[str, Scene] = {}
-    for scene_name, raw_scene in data["scenes"].items():
-        base = f"scenes.{scene_name}"
-        check.mapping(raw_scene, base, SCENE_SCHEMA)
-        furniture: list[FurnitureItem] = []
-        for i, raw in enumerate(check.sequence(raw_scene["furniture"], f"{base}.furniture")):
-            where = f"{base}.furniture[{i}]"
-            f = check.mapping(raw, where, FURNITURE_SCHEMA)
-            if f["model"] not in catalogue.models:
-                hint = difflib.get_close_matches(f["model"], list(catalogue.models), n=1)
-                check.fail(f"{where}.model", f"unknown model {f['model']!r}"
-                           + (f" (did you mean {hint[0]!r}?)" if hint else "")
-                           + f"; models: {', '.join(sorted(catalogue.models))}")
-            if f["room"] not in room_names:
-                check.fail(f"{where}.room", f"unknown room {f['room']!r}; rooms: {', '.join(sorted(room_names))}")
-            if f["id"] in [item.id for item in furniture]:
-                check.fail(f"{where}.id", f"furniture id {f['id']!r} is used twice")
-            spec = catalogue.models[f["model"]]
-            facing = f.get("facing")
-            if spec.has_front:
-                expected = f["yaw"] + spec.front_offset_rad
-                if facing is None:
-                    facing = expected
-                elif not angles_close(facing, expected, 0.02):
-                    check.fail(f"{where}.facing", f"a {f['model']} placed at yaw {f['yaw']} faces "
-                               f"{math.remainder(expected, 2 * math.pi):.3f} rad, not {facing}")
-            elif facing is not None:
-                check.fail(f"{where}.facing", f"a {f['model']} has no front: write null or leave it out")
-            furniture.append(FurnitureItem(f["id"], f["model"], float(f["x"]), float(f["y"]),
-                                           float(f["yaw"]), None if facing is None else float(facing),
-                                           f["room"]))
-        ids = {item.id for item in furniture}
-        objects: list[PlacedObject] = []
-        for i, raw in enumerate(check.sequence(raw_scene.get("objects"), f"{base}.objects")):
-            where = f"{base}.objects[{i}]"
-            o = check.mapping(raw, where, OBJECT_SCHEMA)
-            if o["on"] not in ids:
-                check.fail(f"{where}.on", f"no furniture {o['on']!r} in scene {scene_name!r}")
-            if o["name"] not in catalogue.objects:
-                check.fail(f"{where}.name", f"unknown object {o['name']!r}; objects: {', '.join(sorted(catalogue.objects))}")
-            objects.append(PlacedObject(o["name"], o["on"], float(o["x"]), float(o["y"])))
-        scenes[str(scene_name)] = Scene(str(scene_name), tuple(furniture), tuple(objects))
 
-    return World(
-        name=data["name"],
-        title=data.get("title", ""),
-        floorplan=Floorplan(tuple(rooms), tuple(walls), tuple(doors)),
-        start=Pose2D(start["x"], start["y"], start["heading"]),
-        start_heading_rad=float(start["heading"]),
-        scenes=scenes,
-        source=source,
-    )
+def _parse_scene(scene_name: str, raw_scene, room_names: set[str], check: "_Checker") -> Scene:
+    """One scene: its furniture (models, rooms, facings checked), then the objects on it."""
+    base = f"scenes.{scene_name}"
+    check.mapping(raw_scene, base, SCENE_SCHEMA)
+    catalogue = load_catalogue()
+    furniture: list[FurnitureItem] = []
+    for i, raw in enumerate(check.sequence(raw_scene["furniture"], f"{base}.furniture")):
+        furniture.append(_parse_furniture(raw, f"{base}.furniture[{i}]", furniture, room_names, check))
+    ids = {item.id for item in furniture}
+    objects: list[PlacedObject] = []
+    for i, raw in enumerate(check.sequence(raw_scene.get("objects"), f"{base}.objects")):
+        where = f"{base}.objects[{i}]"
+        o = check.mapping(raw, where, OBJECT_SCHEMA)
+        if o["on"] not in ids:
+            check.fail(f"{where}.on", f"no furniture {o['on']!r} in scene {scene_name!r}")
+        if o["name"] not in catalogue.objects:
+            check.fail(f"{where}.name", f"unknown object {o['name']!r}; objects: {', '.join(sorted(catalogue.objects))}")
+        objects.append(PlacedObject(o["name"], o["on"], float(o["x"]), float(o["y"])))
+    return Scene(scene_name, tuple(furniture), tuple(objects))
+
+
+def _parse_furniture(raw, where: str, earlier: list[FurnitureItem], room_names: set[str],
+                     check: "_Checker") -> FurnitureItem:
+    """One furniture entry: a known model, a known room, a unique id, a facing that agrees
+    with the model's front (derived from the yaw when left out)."""
+    catalogue = load_catalogue()
+    f = check.mapping(raw, where, FURNITURE_SCHEMA)
+    if f["model"] not in catalogue.models:
+        hint = difflib.get_close_matches(f["model"], list(catalogue.models), n=1)
+        check.fail(f"{where}.model", f"unknown model {f['model']!r}"
+                   + (f" (did you mean {hint[0]!r}?)" if hint else "")
+                   + f"; models: {', '.join(sorted(catalogue.models))}")
+    if f["room"] not in room_names:
+        check.fail(f"{where}.room", f"unknown room {f['room']!r}; rooms: {', '.join(sorted(room_names))}")
+    if f["id"] in [item.id for item in earlier]:
+        check.fail(f"{where}.id", f"furniture id {f['id']!r} is used twice")
+    spec = catalogue.models[f["model"]]
+    facing = f.get("facing")
+    if spec.has_front:
+        expected = f["yaw"] + spec.front_offset_rad
+        if facing is None:
+            facing = expected
+        elif not angles_close(facing, expected, 0.02):
+            check.fail(f"{where}.facing", f"a {f['model']} placed at yaw {f['yaw']} faces "
+                       f"{math.remainder(expected, 2 * math.pi):.3f} rad, not {facing}")
+    elif facing is not None:
+        check.fail(f"{where}.facing", f"a {f['model']} has no front: write null or leave it out")
+    return FurnitureItem(f["id"], f["model"], float(f["x"]), float(f["y"]), float(f["yaw"]),
+                         None if facing is None else float(facing), f["room"])
 
 
 # --- writing -------------------------------------------------------------------------------

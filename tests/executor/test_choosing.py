@@ -1,5 +1,5 @@
-"""How the fetch task surveys a room and judges what it can see (which furniture fits an RDT is
-:func:`assistant.spatial.resolve`, tested in ``tests/spatial/test_resolve.py``)."""
+"""How a static node picks its target among perceived furniture, and whether the robot sees it
+(no robot needed: the choice reads only perception and the pose the command was said from)."""
 
 from __future__ import annotations
 
@@ -7,39 +7,88 @@ import math
 
 import pytest
 
-from assistant.executor.fetch import FetchTask
+from assistant.executor.choosing import PlaceChooser, Said
 from assistant.executor.sensing import OracleFurniture
+from assistant.executor.viewing import clear_sight, in_view
 from assistant.geometry import Pose2D
+from assistant.grounding import RDT
+
+
+def _chooser(world) -> PlaceChooser:
+    return PlaceChooser(world, OracleFurniture(world, "original"))
 
 
 @pytest.fixture
 def studio(all_worlds):
-    world = all_worlds["hk-studio"]
-    task = FetchTask(world, OracleFurniture(world, "original"))
-    task._support, task._descriptors = "desk", ()
-    return task
+    return _chooser(all_worlds["hk-studio"])
 
 
 #: at the studio door, looking in (north)
 DOOR = Pose2D(-2.1, 0.8, math.pi / 2)
+DESK = Said("desk")
 
 
-def test_a_large_room_seen_from_its_door_is_surveyed(studio, all_worlds):
-    studio._looked_from = [Pose2D(-2.1, 0.3, math.pi / 2)]
-    points = studio._room_points("studio")
-    assert studio._unseen(points).mean() > studio.max_unseen_share  # most of the studio is far
-    bedroom = FetchTask(all_worlds["one-bedroom-house"], OracleFurniture(all_worlds["one-bedroom-house"], "original"))
-    bedroom._looked_from = [Pose2D(3.1, 5.7, math.pi / 2)]
-    assert bedroom._unseen(bedroom._room_points("bedroom")).mean() <= bedroom.max_unseen_share
+def test_against_the_left_wall_is_the_desk_at_the_west_wall(studio):
+    # desk_1 is nearer and on the left too, but it stands off the west wall; desk_2 is against it
+    ref, target, _ = studio.choose_pair(RDT("wall", "left", "table"), "studio", DOOR, said=DESK)
+    assert ref is None and target.id == "desk_2"
+    # and the right wall is another table: the side said decides
+    assert studio.choose_pair(RDT("wall", "right", "table"), "studio", DOOR, said=DESK)[1].id != "desk_2"
+
+
+def test_every_pair_of_the_node_counts(studio):
+    # "the desk next to the wooden chair at the back on the left": both desks have a chair
+    beside = RDT("chair", "beside", "table")
+    others = [RDT("room", "left", "table"), RDT("room", "back", "table")]
+    assert studio.choose_pair(beside, "studio", DOOR, others, DESK)[1].id == "desk_2"
+
+
+def test_the_back_wall_is_the_far_wall_as_one_enters(all_worlds):
+    # the apartment's living room seen from its door (south side, looking north): the dinner
+    # table stands near the far (north) wall, the round table near the door's own wall
+    chooser = _chooser(all_worlds["apartment"])
+    door = Pose2D(4.5, 1.8, math.pi / 2)
+    _, target, _ = chooser.choose_pair(RDT("wall", "back", "table"), "living room", door)
+    assert target.id == "dinnertable_1"
+
+
+def test_left_of_the_bed_is_the_beds_own_left(apartment):
+    chooser = _chooser(apartment)
+    pose = Pose2D(5.0, -1.8, -math.pi / 2)
+    left = chooser.choose_pair(RDT("bed", "left", "table"), "bedroom", pose)
+    right = chooser.choose_pair(RDT("bed", "right", "table"), "bedroom", pose)
+    # the bed faces south (-90°): its left is east (coffeetable_2), its right west (roundtable_2)
+    assert left[0].id == "bed_1" and left[1].id == "coffeetable_2" and right[1].id == "roundtable_2"
+
+
+def test_nothing_to_choose_when_the_reference_is_not_seen(apartment):
+    chooser = _chooser(apartment)
+    assert chooser.choose_pair(RDT("couch", "front", "table"), "bedroom", Pose2D(5.0, -1.8, 0.0)) is None
+
+
+def test_the_words_said_pick_among_look_alikes(all_worlds):
+    # "the desk" vs any table, in the studio from its door: the desk word favours a desk
+    chooser = _chooser(all_worlds["hk-studio"])
+    tables = chooser.in_room("studio", "table")
+    desks = [e for e in tables if e.id.startswith("desk")]
+    others = [e for e in tables if not e.id.startswith("desk")]
+    assert desks and others
+    assert min(DESK.fit(e) for e in desks) > max(DESK.fit(e) for e in others)
+    assert all(Said().fit(e) == 1.0 for e in tables)
+    surfaces = chooser.likely_surfaces("studio", "table", DOOR, DESK)
+    assert surfaces[0].id.startswith("desk")
 
 
 def test_other_furniture_on_the_line_of_sight_hides_the_target(all_worlds):
     world = all_worlds["apartment"]
-    task = FetchTask(world, OracleFurniture(world, "original"))
-    table = next(e for e in task._in_room("living room", "table") if e.id == "roundtable_1")  # (4.0, 2.0)
+    chooser = _chooser(world)
+    furniture = chooser.perception.furniture()
+    table = next(e for e in chooser.in_room("living room", "table") if e.id == "roundtable_1")  # (4.0, 2.0)
     # from the couch's far side (couch_1 spans x 3.47–5.53 at y ≈ 3), the couch is in the way
-    assert not task._clear_sight(table, 4.0, 3.9)
+    assert not clear_sight(table, 4.0, 3.9, furniture)
     # from the south-west, over open floor, nothing is
-    assert task._clear_sight(table, 2.8, 1.6)
-    assert not task._in_view(table, Pose2D(4.0, 3.9, -math.pi / 2))
-    assert task._in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2)))
+    assert clear_sight(table, 2.8, 1.6, furniture)
+    assert not in_view(table, Pose2D(4.0, 3.9, -math.pi / 2), furniture, 1.8)
+    assert in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2)), furniture, 1.8)
+    # facing away from it, it is not in view either
+    assert not in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2) + math.pi), furniture, 1.8)

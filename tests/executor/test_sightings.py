@@ -1,12 +1,12 @@
 """Placing object sightings: room from the floor plan, support from perceived furniture."""
 
 from assistant.executor.sightings import place_sightings
-from assistant.perception.objects import ObjectSighting
+from assistant.perception.objects import Sighting
 from assistant.world import furniture_entities, world_grid
 
 
 def _seen(name, x, y):
-    return ObjectSighting(name, x, y, 0.8, 1.5, 300, 12.0)
+    return Sighting(name, x, y, 0.8, 1.5, 300, 12.0)
 
 
 def test_objects_on_furniture_get_room_and_support(apartment):

@@ -60,3 +60,16 @@ def test_nominal_transform_is_the_robot_mount():
     # the optical axis points forward and down by the tilt
     axis = m[:3, :3] @ np.array([0.0, 0.0, 1.0])
     assert axis == pytest.approx([math.cos(math.radians(15)), 0.0, -math.sin(math.radians(15))])
+
+
+def test_a_remembered_floor_is_reused_and_a_stale_one_falls_back_to_the_search():
+    depth = floor_depth(1.25, 8.0, roll_deg=5.0)
+    pts, _ = depth_to_points(depth, K, stride=1)
+    searched = find_floor(pts, None)
+    reused = find_floor(pts, None, previous=searched)
+    assert reused.height_m == pytest.approx(searched.height_m, abs=0.005)
+    assert float(reused.normal_camera @ searched.normal_camera) > math.cos(math.radians(0.5))
+    # the camera moved 40 cm up: the remembered plane finds no support and the floor is searched
+    higher = depth_to_points(floor_depth(1.65, 8.0, roll_deg=5.0), K, stride=1)[0]
+    moved = find_floor(higher, None, previous=searched)
+    assert moved.height_m == pytest.approx(1.65, abs=0.03)

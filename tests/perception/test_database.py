@@ -117,3 +117,17 @@ def test_a_wall_can_stand_behind_the_item():
     for pose, *_, wall in views:  # the wall is on the far side from the robot
         robot = pose.inverse().transform_points(np.zeros((1, 2)))[0]
         assert math.cos(wall[0] - math.atan2(robot[1], robot[0])) < 0
+
+
+def test_training_variants_build_and_stay_out_of_the_test_databases():
+    from assistant.perception.database import other_items, variant_items
+
+    variants = variant_items()
+    cats = {i.category for i in variants}
+    assert {"large table", "bed", "small table", "other"} <= cats
+    assert not {i.name for i in variants} & {i.name for i in other_items()}
+    for item in variants:
+        mesh = item.mesh()
+        assert len(mesh.triangles) > 0
+    desk = next(i for i in variants if "monitors" in i.name).mesh()
+    assert desk.get_axis_aligned_bounding_box().get_extent()[2] > 1.0  # monitors above the top

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from assistant.geometry import Pose2D
-from assistant.perception.objects import ObjectDetector, ObjectSighting, SimObjectDetector
+from assistant.perception.objects import ObjectDetector, Sighting, SimObjectDetector
 from assistant.sim.renderer import DepthRenderer
 
 
@@ -33,7 +33,7 @@ def test_sees_the_object_in_front_and_places_it(laptop_view):
     names = [s.name for s in sightings]
     assert "laptop" in names
     seen = sightings[names.index("laptop")]
-    assert isinstance(seen, ObjectSighting)
+    assert isinstance(seen, Sighting)
     assert math.hypot(seen.x_m - laptop.x, seen.y_m - laptop.y) < 0.25
     assert 1.0 < seen.distance_m < 2.0 and seen.pixels >= 50
     assert seen.to_dict()["name"] == "laptop"

@@ -52,7 +52,8 @@ def test_summary_counts_each_check_and_beds_or_couches_nobody_labelled():
                       "false_beds_or_couches": 1}]}}
     s = summarise(report)
     assert (s["frames"], s["floor_found"]) == (4, 3)
-    assert s["labelled"]["bed"] == {"correct": 1, "labelled": 2, "in_range": 1, "in_range_correct": 1}
+    assert s["labelled"]["bed"] == {"correct": 1, "labelled": 2, "in_range": 1, "in_range_correct": 1,
+                                    "out_of_range_partial": 0}
     assert s["labelled"]["couch"]["correct"] == 1 and s["labelled"]["large_table"]["correct"] == 0
     # the SUN frame's couch and the desk read as a bed; the negatives are counted apart
     assert s["false_beds_or_couches_elsewhere"] == 2
@@ -95,3 +96,29 @@ def test_most_of_sun_000001s_bed_lies_beyond_the_four_metres_the_detector_keeps(
             shares[name[:6]] = _in_range_shares(folder / f"{name[:6]}_boxmask.png", frame, floor, 4.0)[1]
     assert shares["000001"] < 0.1
     assert min(shares[f] for f in ("000002", "000003", "000004")) > 0.8
+
+
+def test_any_folder_with_a_frames_json_is_read_and_a_bad_one_says_what_is_missing(tmp_path):
+    import json
+
+    from assistant.errors import DataFileError
+    from assistant.perception.realdata import load_frames, real_folders
+
+    folder = tmp_path / "my_frames"
+    folder.mkdir()
+    depth = np.full((24, 32), 2000, np.uint16)
+    depth[0, 0] = 100  # nearer than min_depth_m: dropped
+    Image.fromarray(depth).save(folder / "a.png")
+    (folder / "frames.json").write_text(json.dumps({
+        "frames": ["a.png", "missing.png"], "intrinsics": [30.0, 30.0, 16.0, 12.0],
+        "depth_scale_m": 0.001, "labels": "negative", "min_depth_m": 0.5}))
+    (tmp_path / "not_frames").mkdir()  # neither known nor described: skipped
+    assert list(real_folders(tmp_path)) == ["my_frames"]
+    assert list(real_folders(folder)) == ["my_frames"]  # the folder itself
+    frames = list(load_frames(tmp_path))
+    assert [(f, n) for f, n, _ in frames] == [("my_frames", "a.png")]
+    d = frames[0][2].depth_m
+    assert d.shape == (24, 32) and d[0, 0] == 0.0 and d[5, 5] == 2.0
+    (folder / "frames.json").write_text(json.dumps({"frames": ["a.png"], "labels": "negative"}))
+    with pytest.raises(DataFileError, match="intrinsics"):
+        real_folders(tmp_path)

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from assistant.executor.sightings import PlacedSighting
-from assistant.generation import room_order, search_for
+from assistant.executor.outcome import ExecutionStatus
+from assistant.executor.search import room_order, search_for
+from assistant.perception.objects import Sighting
 from assistant.world import load_world
 
 
@@ -14,6 +15,13 @@ def furniture_detector():
     from assistant.perception import FurnitureDetector
 
     return FurnitureDetector()
+
+
+@pytest.fixture(scope="module")
+def describer():
+    from assistant.generation import Describer
+
+    return Describer()
 
 
 def test_rooms_are_ordered_from_the_start_room_then_nearest():
@@ -29,13 +37,13 @@ def test_search_finds_the_object_and_reports_what_it_sees(furniture_detector):
     events = []
     result = search_for("laptop", "hk-studio", "original", furniture_detector=furniture_detector,
                         on_event=lambda name, data: events.append((name, data)))
-    assert result.found and result.status == "found"
+    assert result.found and result.status is ExecutionStatus.SUCCESS
     assert result.sighting.room == "meeting room"
-    assert abs(result.sighting.x - -4.0) < 0.3 and abs(result.sighting.y - -2.9) < 0.3
-    assert result.placed.furniture_category in ("large table", "small table")
+    assert abs(result.sighting.x_m - -4.0) < 0.3 and abs(result.sighting.y_m - -2.9) < 0.3
+    assert result.sighting.furniture_category in ("large table", "small table")
     assert any(e.name == "table" for e in result.furniture)  # the environment model it built
     seen = [d for n, d in events if n == "objects_seen"]
-    assert seen and all(isinstance(p, PlacedSighting) for d in seen for p in d["seen"])
+    assert seen and all(isinstance(p, Sighting) and p.room for d in seen for p in d["seen"])
     assert all("pose" in d for d in seen)
     assert "laptop" in result.seen
     assert result.sim_seconds > 0 and result.wall_seconds > 0 and result.frames >= 1
@@ -45,7 +53,7 @@ def test_an_object_that_is_nowhere_gets_an_honest_answer_after_the_search(furnit
     world = load_world("apartment")
     result = search_for("stapler", world, "original", furniture_detector=furniture_detector,
                         max_vantages=0)  # entry look-arounds only: a short test
-    assert not result.found and result.status == "not_found"
+    assert not result.found and result.status is ExecutionStatus.NOT_FOUND
     assert sorted(result.rooms_searched) == sorted(world.floorplan.room_names)
     answer = describer.describe_search(result, world.floorplan)
     assert not answer.found and answer.search == "sensed"
