@@ -3,7 +3,7 @@
 #   make test   set up, then run the tests
 VENV ?= .venv
 PY := $(VENV)/bin/python
-SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libfreenect-dev libfreenect-bin
+SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libportaudio2 libfreenect-dev libfreenect-bin
 STAMP := $(VENV)/.installed
 
 .PHONY: run test setup system-packages bench clean
@@ -20,6 +20,7 @@ bench: setup
 setup: $(STAMP)
 
 # System libraries open3d (libusb, libgomp, GL/EGL for its module), speech output (espeak-ng),
+# the microphone and sound output (libportaudio2, for sounddevice),
 # the Kinect (libfreenect-dev to build the freenect binding; libfreenect-bin for fakenect).
 system-packages:
 	@missing=""; for p in $(SYSTEM_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
