@@ -133,7 +133,7 @@ class SpeechChat:
 
     def _barge_in(self, spotter, block) -> None:
         """Microphone callback: spot "stop" only while the robot drives or talks."""
-        if not self.session.manager.busy:
+        if not (self.session.manager.busy or self.speaker.speaking):
             spotter.reset()
             return
         if spotter.feed(block):
