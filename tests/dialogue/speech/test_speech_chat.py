@@ -32,7 +32,7 @@ def test_chat_from_wav_files_speaks_replies_to_a_file(tmp_path, say_wav):
     assert done.returncode == 0, done.stderr
     text = done.stdout
     assert "you (heard" in text and "where is my laptop" in text
-    assert "laptop is on the" in text  # the dialogue answered the spoken question
+    assert "The laptop is in the living room" in text  # the dialogue answered the spoken question
     assert "skipped 2-corrupt.wav" in text and "not a readable audio file" in text
     assert "You can ask me to fetch things" in text  # the session went on after the bad file
     assert "Goodbye" in text
