@@ -97,6 +97,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = 
             parser = parsers(item.world)
             row["plan_equal"] = plan_of(parser, heard.transcript) == plan_of(parser, item.text)
         rows.append(row)
+    recogniser.close()
     head = {"engine": engine, "recogniser": recogniser.describe(), "quick": quick, "all_voices": all_voices,
             "confirm_below": threshold, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
     return report_of(rows, head)

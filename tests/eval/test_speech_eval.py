@@ -22,7 +22,7 @@ def test_noise_is_seeded_and_mixed_at_the_asked_snr():
     assert np.array_equal(a, b) and not np.array_equal(a, c)
     assert abs(float(np.mean(a ** 2)) - 1.0) < 1e-3
     t = np.arange(32000) / 16000.0
-    speech = np.concatenate([np.zeros(8000), 0.3 * np.sin(2 * np.pi * 220 * t), np.zeros(8000)]).astype(np.float32)
+    speech = np.concatenate([np.zeros(8000), 0.1 * np.sin(2 * np.pi * 220 * t), np.zeros(8000)]).astype(np.float32)
     noise = household_noise(len(speech), 1)
     for snr in (20.0, 10.0):
         mixed = mix_at_snr(speech, noise, snr)

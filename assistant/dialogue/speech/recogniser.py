@@ -78,6 +78,9 @@ class Recogniser(ABC):
         """Engine, model and settings, for ``--json`` outputs and the docs."""
         return {"engine": self.name}
 
+    def close(self) -> None:
+        """Wait for background loading to end (before the program exits)."""
+
 
 
 def make_recogniser(name: str = DEFAULT_ENGINE, **options) -> Recogniser:

@@ -152,6 +152,7 @@ class SpeechChat:
         finally:
             if self._mic is not None:
                 self._mic.close()
+            self.listener.recogniser.close()
 
     def _warm_speaker(self) -> None:
         try:

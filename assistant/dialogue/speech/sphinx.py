@@ -62,8 +62,15 @@ class PocketsphinxRecogniser(Recogniser):
         self._open = None
         self._open_lock = threading.Lock()
         self._open_error: str | None = None
+        self._loader = None
         if open_fallback:
-            threading.Thread(target=self._load_open, name="pocketsphinx-open-model", daemon=True).start()
+            self._loader = threading.Thread(target=self._load_open, name="pocketsphinx-open-model", daemon=True)
+            self._loader.start()
+
+    def close(self) -> None:
+        # a daemon thread still inside the decoder's C++ code when Python exits aborts the program
+        if self._loader is not None:
+            self._loader.join()
 
     # ------------------------------------------------------------------ models
     def _load_open(self):
