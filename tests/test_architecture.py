@@ -21,7 +21,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "assistant"
 
 #: lowest first; modules of one layer may import each other
 LAYERS: tuple[tuple[str, ...], ...] = (
-    ("errors", "fileio", "rdt", "runtime"),
+    ("errors", "fileio", "progress", "rdt", "runtime"),
     ("geometry",),
     ("world",),
     ("robot",),

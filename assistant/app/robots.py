@@ -31,6 +31,8 @@ def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = Tru
     ``world`` (a :class:`~assistant.world.World`) in ``scene``, from its start pose (or
     ``start``), with odometry noise when ``noise`` (the localizer corrects it)."""
     parsed = parse_robot_spec(spec)
+    if parsed.scheme == "p3dx":  # a real base starts its odometry where the home's plan says it stands
+        return make_robot(parsed, start=start or world.start)
     if parsed.scheme != "sim":
         return make_robot(parsed)
     named = spec_world(str(parsed))

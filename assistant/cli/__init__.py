@@ -30,7 +30,12 @@ COMMAND_MODULES = (
     "listen",
     "eval",
     "doctor",
+    "warmup",
 )
+
+
+#: commands that talk with the person (a terminal line ticking beside them would be in the way)
+INTERACTIVE_COMMANDS = frozenset({"chat", "teach", "record"})
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -57,6 +62,16 @@ def main(argv: list[str] | None = None) -> int:
 
     parser = build_parser()
     args = parser.parse_args(join_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    import assistant.progress as progress
+
+    # training on first use shows its progress on a terminal; quiet with --json or in a pipe
+    json_output = bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
+    terminal = not json_output and sys.stderr.isatty()
+    progress.set_hook(progress.TerminalProgress() if terminal else progress.quiet)
+    # a command that works a while before it prints says so (not the interactive ones)
+    heartbeat = progress.Heartbeat(f"assistant {args.command}")
+    if terminal and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
+        heartbeat.start()
     try:
         return int(args.handler(args) or 0)
     except AssistantError as error:
@@ -67,3 +82,6 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     except BrokenPipeError:  # e.g. `assistant world apartment --json | head`
         return 0
+    finally:
+        heartbeat.stop()
+        progress.set_hook(None)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import seed_int
+from assistant.cli.common import finite_float, seed_int
 
 PROMPT = "you> "
 
@@ -56,7 +56,7 @@ def add_speech_arguments(parser) -> None:
     group.add_argument("--rate", type=int, default=170, help="speaking rate, words per minute (default 170)")
     group.add_argument("--say-to", metavar="FILE.wav",
                        help="write everything the robot says to this WAV file instead of playing it")
-    group.add_argument("--confirm-below", type=float, default=None, metavar="P",
+    group.add_argument("--confirm-below", type=finite_float, default=None, metavar="P",
                        help="ask \"Did you say ...?\" below this recognition confidence (default 0.45)")
     group.add_argument("--mic", default=None, help="microphone: a PortAudio device index or name")
 

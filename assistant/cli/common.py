@@ -36,8 +36,6 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
-#: longest command text accepted, in characters (a spoken command has a few hundred)
-MAX_COMMAND_CHARS = 2000
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
 
@@ -65,7 +63,10 @@ def parse_request(line: str) -> dict:
 
 
 def check_command_text(text) -> str:
-    """The command text, refused when empty or longer than :data:`MAX_COMMAND_CHARS`."""
+    """The command text, refused when empty or longer than the parser takes
+    (:data:`assistant.grounding.parser.MAX_CHARS`)."""
+    from assistant.grounding.parser import MAX_CHARS as MAX_COMMAND_CHARS
+
     if not isinstance(text, str):
         raise AssistantError(f"the command must be text, got {type(text).__name__}")
     if not text.strip():
@@ -245,22 +246,13 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
-def stderr_progress(what: str, done: int | None = None, total: int | None = None) -> None:
-    """A progress hook (:class:`assistant.eval.progress.Progress`) that writes one line per call
-    to stderr: ``what``, then ``done/total`` when the stage is counted."""
-    count = "" if done is None else f" ({done}/{total})" if total is not None else f" ({done})"
-    sys.stderr.write(f"{what}{count}\n")
-    sys.stderr.flush()
-
-
-def quiet_progress(what: str, done: int | None = None, total: int | None = None) -> None:
-    """A progress hook that says nothing (``--json`` runs)."""
-
-
 def progress_for(args: argparse.Namespace):
-    """The progress hook of one command: quiet with ``--json`` (its stdout is read by programs
-    and its stderr often shown beside it), one line per step on stderr otherwise."""
-    return quiet_progress if getattr(args, "json", False) else stderr_progress
+    """The progress hook of one command (:class:`assistant.eval.progress.Progress`): quiet with
+    ``--json`` (its stdout is read by programs and its stderr often shown beside it); a tqdm bar
+    per stage on a terminal; one line per step on stderr otherwise (a log)."""
+    from assistant.progress import for_terminal
+
+    return for_terminal(bool(getattr(args, "json", False)))
 
 
 def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:

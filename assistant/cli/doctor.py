@@ -15,12 +15,15 @@ import ctypes.util
 import glob
 import grp
 import importlib
+import math
 import os
 import shutil
 import stat
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
+
+import numpy as np
 
 from assistant.cli.common import add_json_flag, emit_json
 
@@ -50,6 +53,8 @@ def register(subparsers) -> None:
     parser.add_argument("--port", help="the robot's serial port to check (default: every USB-serial port)")
     parser.add_argument("--probe", action="store_true",
                         help="with --port: talk to the controller (handshake, one status packet; no motion)")
+    parser.add_argument("--kinect", action="store_true",
+                        help="open the Kinect, read one depth frame, report what it sees, close it")
     parser.add_argument("--first-drive", action="store_true",
                         help=f"with --port: the bring-up drive — {FIRST_DRIVE_M:g} m straight ahead at "
                              f"{FIRST_DRIVE_SPEED_M_S:g} m/s, then stop; clear 1 m in front of the robot")
@@ -59,6 +64,8 @@ def register(subparsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     checks = run_checks(port=args.port, probe=args.probe)
+    if args.kinect:
+        checks.append(probe_kinect())
     if args.first_drive:
         checks.append(first_drive(args.port))
     counts = {s: sum(c.status == s for c in checks) for s in ("ok", "warn", "fail")}
@@ -238,6 +245,31 @@ def check_kinect_usb(sys_usb: str, dev: str, access: Callable[[str, int], bool])
     return Check("Kinect", "warn", "no Kinect camera on USB",
                  "plug the Kinect into a USB 2 port and its own 12 V power supply (the USB plug alone "
                  "does not power it)")
+
+
+def probe_kinect(**options) -> Check:
+    """Open the Kinect adapter (``options`` go to it), read one frame, report it, close it."""
+    from assistant.errors import AssistantError
+
+    try:
+        from assistant.robot.kinect import Kinect
+    except ImportError as error:
+        return Check("Kinect frame", "fail", f"the Kinect adapter cannot be loaded ({error})",
+                     "run `make setup`")
+    try:
+        with Kinect(**options) as camera:
+            frame = camera.depth_frame()
+    except AssistantError as error:
+        return Check("Kinect frame", "fail", str(error), "see hardware/README.md, bring-up steps 1–4 and 7")
+    valid = frame.valid
+    if not valid.any():
+        return Check("Kinect frame", "fail", "a frame with no depth readings",
+                     "take the lens cap off, aim the camera at the room (0.5–4.5 m), keep it out of sunlight")
+    depths = frame.depth_m[valid]
+    return Check("Kinect frame", "ok",
+                 f"{frame.intrinsics.width}×{frame.intrinsics.height}, {valid.mean():.0%} of pixels with depth, "
+                 f"median {float(np.median(depths)):.2f} m; mount {frame.mount.height_m:.2f} m high, tilted "
+                 f"{math.degrees(frame.mount.tilt_rad):.1f}° down")
 
 
 # ---------------------------------------------------------------------------- audio

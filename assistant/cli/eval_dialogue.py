@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, print_table, progress_for
+from assistant.cli.common import emit_json, finite_float, print_table, progress_for
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -18,7 +18,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="'where is my X' for an object not in memory: the robot searches (sensed, "
                              "default) or the world file answers (oracle); a conversation's own "
                              "'search:' key wins")
-    parser.add_argument("--timeout", type=float, default=180.0, help="seconds a fetch may take before it counts as a hang")
+    parser.add_argument("--timeout", type=finite_float, default=180.0, help="seconds a fetch may take before it counts as a hang")
     parser.add_argument("--only", metavar="NAME", help="run only conversations whose name contains NAME")
     parser.add_argument("--verbose", action="store_true", help="print every turn")
 

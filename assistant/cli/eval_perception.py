@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, print_table, progress_for
+from assistant.cli.common import emit_json, finite_float, print_table, progress_for
 from assistant.eval.perception import CATEGORY_ORDER, DEFAULT_CLASSIFIERS
 
 
@@ -19,7 +19,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--train-plans", type=int, default=None, metavar="K",
                         help="train on the first K training view plans only (default: all; 2 is "
                              "the previous default, without the views against a wall)")
-    parser.add_argument("--range-m", type=float, default=None, metavar="M",
+    parser.add_argument("--range-m", type=finite_float, default=None, metavar="M",
                         help="how far ahead (metres) the detector keeps points (default: the "
                              "product's 4.0, as in the dissertation); an experiment knob")
     parser.add_argument("--no-coverage", action="store_true",

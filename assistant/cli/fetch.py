@@ -32,6 +32,9 @@ def register(subparsers) -> None:
     parser.add_argument("--robot", metavar="SPEC", default="sim",
                         help="sim (default) or replay:FILE.mcap — a recorded session (assistant record): "
                              "its home is the recording's unless --world says otherwise")
+    parser.add_argument("--record", metavar="OUT.mcap",
+                        help="record the run (depth, odometry, commands, the command's words) as MCAP; "
+                             "replay it with --robot replay:OUT.mcap")
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "
                         "(default: the one the command names)")
     parser.add_argument("--batch", metavar="FILE",
@@ -74,6 +77,8 @@ def run(args: argparse.Namespace) -> int:
 
         raise AssistantError(f"say which home with --world NAME; homes: {', '.join(world_names())}")
     text = check_command_text(" ".join(args.text))
+    if args.record:
+        robot = _recording(robot, args, text)
     view = _Viewer() if args.view else None
     outcome = runner.run(text, args.world, args.scene, args.perception, args.seed, args.object,
                          on_event=view.on_event if view else None, robot=robot)
@@ -105,6 +110,20 @@ def _robot(args):
     if recorded.get("scene") and args.scene == "original":
         args.scene = recorded["scene"]
     return robot
+
+
+def _recording(robot, args, text: str):
+    """The run's robot (a new simulator like the runner's when None) wrapped in a recorder,
+    connected, with the command's words as the dialogue's first turn."""
+    from assistant.robot import make_robot
+    from assistant.robot.recording import RecordingRobot
+
+    if robot is None:
+        robot = make_robot("sim", world=args.world, scene=args.scene, seed=args.seed, noise=True)
+    metadata = {"spec": args.robot, "world": args.world, "scene": args.scene, "task": f"fetch: {text}", "fetch": text}
+    recorder = RecordingRobot(robot, args.record, metadata).connect()
+    recorder.record_turn("user", text)
+    return recorder
 
 
 def _print(d: dict) -> None:

@@ -42,6 +42,13 @@ def register(subparsers) -> None:
     disk.add_argument("--camera-height", type=finite_float, metavar="H",
                       help="camera height above the floor (m); with --tilt predicts the floor")
     disk.add_argument("--tilt", type=finite_float, metavar="DEG", help="camera pitch down (degrees)")
+    replay = parser.add_argument_group("frames of a recording")
+    replay.add_argument("--replay", metavar="FILE",
+                        help="a recording (assistant record's .mcap, a ROS bag, a TUM RGB-D folder): "
+                             "detections in every frame, in the world (odometry) frame")
+    replay.add_argument("--frame", type=int, metavar="N", help="with --replay: only frame N (0 = the first)")
+    replay.add_argument("--at", type=finite_float, metavar="SECONDS",
+                        help="with --replay: only the frame in view SECONDS after the recording starts")
     parser.add_argument("--orientation", default="plane", choices=("plane", "linear"),
                         help="orientation estimator (default: plane)")
     parser.add_argument("--classifier", default=None, choices=("gsvm", "lsvm", "autoencoder"),
@@ -56,7 +63,11 @@ def register(subparsers) -> None:
 def run(args: argparse.Namespace) -> int:
     from assistant.errors import AssistantError
 
-    detector = _detector(args)
+    import functools
+
+    detector = functools.cache(lambda: _detector(args))  # built when a request first needs it
+    if args.replay:
+        return _run_replay(detector(), args)
     if args.batch:
         return run_batch(args.batch, lambda req: _handle(detector, _request(req)), json_requests=True)
     if bool(args.world) == bool(args.depth):
@@ -70,6 +81,45 @@ def run(args: argparse.Namespace) -> int:
         emit_json(result)
         return 0
     _print(result)
+    return 0
+
+
+def _run_replay(detector, args) -> int:
+    """Detections in the frames of a recording (all, or the one chosen by --frame / --at)."""
+    from assistant.errors import AssistantError
+    from assistant.robot.replay import ReplayRobot
+
+    if args.world or args.depth or args.batch:
+        raise AssistantError("--replay reads its frames from the recording: leave out --world, --depth and --batch")
+    if args.frame is not None and args.at is not None:
+        raise AssistantError("choose the frame with --frame N or --at SECONDS, not both")
+    if (args.frame is not None and args.frame < 0) or (args.at is not None and args.at < 0):
+        raise AssistantError("--frame and --at count from the start of the recording: use 0 or more")
+    rows = []
+    with ReplayRobot(args.replay, on_end="hold") as robot:
+        start_s = robot.time_s
+        if args.at is not None:
+            robot.advance(args.at)
+        for index, frame in enumerate(robot.frames() if args.at is None else [robot.depth_frame()]):
+            if args.frame is not None and index != args.frame:
+                continue
+            result = detector.analyse(frame).to_dict()
+            pose = frame.robot_pose
+            rows.append({"index": index if args.at is None else None, "t": round(frame.timestamp_s - start_s, 3),
+                         "pose": None if pose is None else [round(pose.x, 3), round(pose.y, 3), round(pose.theta, 4)],
+                         **result})
+            if args.frame is not None:
+                break
+    if args.frame is not None and not rows:
+        raise AssistantError(f"the recording has no frame {args.frame} (frames count from 0)")
+    single = args.frame is not None or args.at is not None
+    out = {"replay": args.replay, **rows[0]} if single else {"replay": args.replay, "frames": rows}
+    if args.json:
+        emit_json(out)
+        return 0
+    for row in rows:
+        print(f"frame {row['index'] if row['index'] is not None else '-'} at {row['t']:.2f} s, pose {row['pose']}:")
+        _print(row)
     return 0
 
 
@@ -115,7 +165,7 @@ def _handle(detector, req: dict) -> dict:
         check_pose_in_map(world, Pose2D(*req["pose"]))
         renderer = DepthRenderer(world, req.get("scene", "original"))
         frame = renderer.render(Pose2D(*req["pose"]))
-        result = detector.analyse(frame)
+        result = detector().analyse(frame)
         out = {"world": world.name, "scene": renderer.scene, "pose": list(req["pose"])}
     elif req.get("depth"):
         if req.get("intrinsics") is None or req.get("depth_scale") is None:
@@ -124,7 +174,7 @@ def _handle(detector, req: dict) -> dict:
 
         frame, has_mount = load_depth_png(req["depth"], tuple(req["intrinsics"]), float(req["depth_scale"]),
                                           camera_height_m=req.get("camera_height"), tilt_deg=req.get("tilt"))
-        result = detector.analyse(frame, use_mount=has_mount)
+        result = detector().analyse(frame, use_mount=has_mount)
         out = {"depth": str(req["depth"])}
     else:
         raise AssistantError("a request needs either world and pose, or depth, intrinsics and depth_scale")

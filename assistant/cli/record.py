@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json
+from assistant.cli.common import add_json_flag, emit_json, finite_float
 
 
 def register(subparsers) -> None:
@@ -30,9 +30,9 @@ def register(subparsers) -> None:
     parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
                         help="furniture perception for --fetch (default: sensed)")
     parser.add_argument("--seed", type=int, default=0, help="simulator seed (default 0)")
-    parser.add_argument("--step-deg", type=float, default=30.0, metavar="DEG",
+    parser.add_argument("--step-deg", type=finite_float, default=30.0, metavar="DEG",
                         help="looking around: a frame every DEG degrees of the turn (default 30)")
-    parser.add_argument("--turn-rate", type=float, default=0.4, metavar="RAD_S",
+    parser.add_argument("--turn-rate", type=finite_float, default=0.4, metavar="RAD_S",
                         help="looking around: turn rate in rad/s (default 0.4)")
     parser.add_argument("--overwrite", action="store_true", help="replace OUT.mcap if it exists")
     add_json_flag(parser)
@@ -99,6 +99,8 @@ def look_around(robot, step_deg: float = 30.0, turn_rate_rad_s: float = 0.4) -> 
 def _fetch(robot, args, world: str, scene: str) -> dict:
     from assistant.executor.trial import FetchRunner
 
+    robot.connect()
+    robot.record_turn("user", args.fetch)
     outcome = FetchRunner().run(args.fetch, world, scene, args.perception, args.seed, robot=robot)
     robot.close()
     return outcome.data

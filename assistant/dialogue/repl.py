@@ -12,6 +12,7 @@ from pathlib import Path
 from assistant.dialogue.manager import DialogueManager, Turn
 from assistant.dialogue.memory import ObjectMemory, default_data_dir
 from assistant.dialogue.services import Services
+from assistant.errors import AssistantError
 from assistant.fileio import PRIVATE_FILE_MODE, atomic_write_text, private_dir
 
 PROMPT = "you> "
@@ -162,6 +163,12 @@ class ChatSession:
         return line.rstrip("\n")
 
     def loop(self) -> int:
+        # the parser is loaded before the greeting (every reply needs it; from the cache it takes
+        # about a second), the rest in the background: the first reply does not wait for it
+        try:
+            self.services.parser(self.world)
+        except AssistantError as error:  # said again when the parser is used
+            self._print(f"(language models: {error})")
         self.services.warm_up(self.world, background=True, scene=self.scene)
         readline = self._setup_readline()
         self._say(self.manager.greeting(), label="")

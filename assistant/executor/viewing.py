@@ -19,6 +19,7 @@ from assistant.executor.planning import OccupancyMap
 from assistant.executor.sensing import entity_centre, entity_polygon, entity_room
 from assistant.geometry import Pose2D
 from assistant.world import Entity, World
+from assistant.world.entity import as_item
 
 __all__ = ["HALF_FOV_RAD", "clear_sight", "in_view", "viewing_poses"]
 
@@ -58,7 +59,7 @@ def clear_sight(target: Entity, x: float, y: float, furniture: Sequence[Entity],
     for other in furniture:
         if other.id == target.id:
             continue
-        cells = other.points_m()
+        cells = as_item(other).points_m()  # a track that swallowed the target's cells is not in the way
         if len(cells) == 0:
             continue
         lo, hi = cells.min(axis=0) - 0.1, cells.max(axis=0) + 0.1

@@ -312,7 +312,10 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
             descriptions.append(d)
         for c in labels.commands:
             commands.append(type(c)(f"{prefix}{c.number}", c.records, c.groundings, c.source))
-    model = GenerationModel().fit(descriptions, commands)
+    from assistant.progress import working
+
+    with working("training the description model (first use; cached after)"):
+        model = GenerationModel().fit(descriptions, commands)
     if use_cache:
         write_cache(path, model)
     return model

@@ -19,6 +19,9 @@ from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
 #: longest command accepted, in words (a spoken fetch command has a few dozen)
 MAX_WORDS = 200
+#: longest command accepted, in characters, checked before any work (a pasted page would take
+#: the tokenizer and tagger tens of seconds before the word count refused it)
+MAX_CHARS = 2000
 
 
 @dataclass
@@ -88,7 +91,11 @@ class CommandParser:
 
     def parse(self, text: str) -> ParseResult:
         """Parse and ground one command. Odd words never raise (they are listed in ``unused``);
-        only a command longer than :data:`MAX_WORDS` words is refused."""
+        only a command longer than :data:`MAX_WORDS` words or :data:`MAX_CHARS` characters is
+        refused."""
+        if len(text or "") > MAX_CHARS:
+            raise AssistantError(f"the command has {len(text)} characters, more than {MAX_CHARS}; "
+                                 "say it as several shorter commands")
         analysis = self.language.analyse(text or "")
         if len(analysis.tokens) > MAX_WORDS:
             raise AssistantError(f"the command has {len(analysis.tokens)} words, more than {MAX_WORDS}; "

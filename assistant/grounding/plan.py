@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 from assistant.grounding.types import ChunkGrounding, GroundingPlan, RDTNode
 from assistant.grounding.vocabulary import (
+    DESCRIPTORS,
     DYNAMIC_REFERENCES,
     FILLERS,
     FURNITURE_WORDS,
@@ -174,8 +175,9 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
 def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[str] = (),
                  corrections: dict[str, str] | None = None) -> list[str]:
     """Words the plan could not use: unknown to the grounder (or the tagger) or outside every
-    chunk, fillers excepted; a typo the tagger corrected counts as its correction. Returned as
-    said, in order."""
+    chunk, fillers excepted; a typo the tagger corrected counts as its correction. A descriptor
+    inside a chunk ("dinner" in "the dinner table") is used: the plan's node keeps it to choose
+    among several tables. Returned as said, in order."""
     unknown_set = {u.lower() for u in unknown}
     corrections = corrections or {}
     labels = tree.nested_labels()
@@ -184,6 +186,8 @@ def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[
         canon, _ = canonical_tokens([corrections.get(token.text, token.text)], [token.pos])
         word = canon[0] if canon else ""
         if not word or word in FILLERS or not any(ch.isalnum() for ch in word):
+            continue
+        if label != "O" and token.text.lower() in DESCRIPTORS:
             continue
         if label == "O" or token.text.lower() in unknown_set or (word not in vocabulary
                                                                     and word not in FURNITURE_WORDS):

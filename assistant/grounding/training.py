@@ -110,13 +110,16 @@ def train_grounder(name: str = DEFAULT_GROUNDER, corpus_paths=None, *, use_cache
     cache_file = cache_dir() / f"grounder-{name}-{key}.pickle"
     if use_cache and (cached := read_cache(cache_file, type(grounder))) is not None:
         return cached
-    labels = load_labels(csvs, xmls)
-    if not labels.commands:
-        raise AssistantError(f"no readable rows in {', '.join(map(str, csvs))}: "
-                             + ("; ".join(labels.problems[:3]) or "the files are empty"))
-    for problem in labels.problems[:5]:
-        log.warning("%s", problem)
-    grounder.fit(labels.records, labels.groundings)
+    from assistant.progress import working
+
+    with working(f"training the {name} grounder (first use; cached after)"):
+        labels = load_labels(csvs, xmls)
+        if not labels.commands:
+            raise AssistantError(f"no readable rows in {', '.join(map(str, csvs))}: "
+                                 + ("; ".join(labels.problems[:3]) or "the files are empty"))
+        for problem in labels.problems[:5]:
+            log.warning("%s", problem)
+        grounder.fit(labels.records, labels.groundings)
     grounder.training_files_ = [str(p) for p in csvs]
     if use_cache:
         write_cache(cache_file, grounder)

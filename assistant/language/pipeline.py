@@ -98,7 +98,10 @@ class LanguageModel:
         cache_file = cache_dir() / f"language-{key}.pickle"
         if use_cache and (model := read_cache(cache_file, cls)) is not None:
             return model
-        model = cls.train(read_corpora(paths))
+        from assistant.progress import working
+
+        with working("training the tagger and chunker (first use; cached after)"):
+            model = cls.train(read_corpora(paths))
         if use_cache:
             write_cache(cache_file, model)
         return model

@@ -465,6 +465,9 @@ def cached_database(name: str, items: list[Item], plan: ViewPlan,
         except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile) as error:
             logging.getLogger(__name__).warning(  # a damaged cache file is rebuilt
                 "ignoring unreadable view database %s (%s); rendering it again", path, error)
-    db = render_database(items, plan, params)
+    from assistant.progress import working
+
+    with working(f"rendering {len(items)} furniture items' training views ({name}; first use, cached after)"):
+        db = render_database(items, plan, params)
     atomic_write_bytes(path, db.to_bytes())
     return db

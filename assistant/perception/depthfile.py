@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -30,6 +31,19 @@ def check_mount(camera_height_m: float | None, tilt_deg: float | None) -> None:
             raise AssistantError(f"{name} must be a number from {low:g} to {high:g} {unit}, got {value!r}")
 
 
+def _read_depth_pixels(image, file: Path) -> np.ndarray:
+    """The pixels of an opened image, after checking its size and mode from the header."""
+    with image as im:
+        width, height = im.size
+        if width * height > MAX_PIXELS:
+            raise AssistantError(f"{file}: {width}×{height} pixels is more than a depth camera "
+                                 f"gives (at most {MAX_PIXELS:,} pixels); give a depth frame")
+        if im.mode not in DEPTH_MODES:
+            raise AssistantError(f"{file}: a {im.mode!r} image is not depth; give a 16-bit "
+                                 "single-channel PNG (depth units, 0 for no reading)")
+        return np.asarray(im)
+
+
 def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, float],
                    depth_scale: float, *, camera_height_m: float | None = None,
                    tilt_deg: float | None = None, invalid_values: tuple[int, ...] = (65535,)
@@ -46,15 +60,9 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     check_mount(camera_height_m, tilt_deg)
     file = Path(path)
     try:
-        with Image.open(file) as im:  # reads the header only: size and mode are checked first
-            width, height = im.size
-            if width * height > MAX_PIXELS:
-                raise AssistantError(f"{file}: {width}×{height} pixels is more than a depth camera "
-                                     f"gives (at most {MAX_PIXELS:,} pixels); give a depth frame")
-            if im.mode not in DEPTH_MODES:
-                raise AssistantError(f"{file}: a {im.mode!r} image is not depth; give a 16-bit "
-                                     "single-channel PNG (depth units, 0 for no reading)")
-            raw = np.asarray(im)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # refused below, by our bound
+            raw = _read_depth_pixels(Image.open(file), file)
     except FileNotFoundError:
         raise AssistantError(f"{file}: no such depth image") from None
     except IsADirectoryError:

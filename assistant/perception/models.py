@@ -116,6 +116,10 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
     if (models := read_cache(path, PerceptionModels)) is not None:
         return models
-    models = fit_models(training_database(plans, items, variants), method, features)
+    from assistant.progress import working
+
+    database = training_database(plans, items, variants)
+    with working(f"training the furniture classifier ({method}; first use, cached after)"):
+        models = fit_models(database, method, features)
     write_cache(path, models)
     return models

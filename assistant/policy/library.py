@@ -91,7 +91,10 @@ class PolicyLibrary:
         by_rdt: dict[str, list] = {}
         for demo in demos:
             by_rdt.setdefault(demo.rdt, []).append(demo)
-        models = {rdt: PolicyModel(rdt, **self.model_params).fit(group) for rdt, group in sorted(by_rdt.items())}
+        from assistant.progress import counted
+
+        models = {rdt: PolicyModel(rdt, **self.model_params).fit(by_rdt[rdt])
+                  for rdt in counted(sorted(by_rdt), "training the policy models (first use; cached after)")}
         if self.use_cache and self.cache_path is not None:
             write_cache(self.cache_path, models)
         return models

@@ -37,6 +37,8 @@ from pathlib import Path
 
 import numpy as np
 
+from assistant.errors import DataFileError
+from assistant.robot import hardware
 from assistant.robot.errors import DeviceNotConnectedError, RobotConnectionError
 from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
 from assistant.robot.kinect_worker import FORMATS, FRAME_HEADER, HEADER, MAGIC
@@ -47,7 +49,7 @@ __all__ = ["FAKENECT_LIBRARY_DIRS", "Kinect", "KinectDisconnectedError", "Kinect
 #: where Debian's libfreenect-bin puts fakenect's stand-in libfreenect
 FAKENECT_LIBRARY_DIRS = ("/usr/lib/x86_64-linux-gnu/fakenect", "/usr/lib/aarch64-linux-gnu/fakenect",
                          "/usr/lib/fakenect", "/usr/local/lib/fakenect")
-#: the tilt motor's range (degrees, positive tilts the camera up), as libfreenect clamps it
+#: the tilt motor's range (degrees, positive tilts the camera up) when hardware/kinect.yaml has none
 TILT_RANGE_DEG = (-27.0, 27.0)
 #: how long the worker may take to find and open the camera
 OPEN_TIMEOUT_S = 10.0
@@ -82,16 +84,21 @@ def raw_disparity_to_mm(raw: np.ndarray) -> np.ndarray:
     return np.where(valid & (depth_m > 0), np.round(depth_m * 1000.0), 0).astype(np.uint16)
 
 
-def _hardware_camera() -> tuple[CameraIntrinsics, CameraMount, float]:
-    """Intrinsics, mount and frame timeout from ``hardware/kinect.yaml``, or the defaults."""
-    try:
-        from assistant.robot import hardware
-    except ImportError:  # a checkout without the hardware description
-        return CameraIntrinsics.kinect_v1(), CameraMount(), 2.0
+def _hardware_camera() -> tuple[CameraIntrinsics, CameraMount, float, tuple[float, float]]:
+    """Intrinsics, mount, frame timeout (s) and tilt motor range (degrees) from
+    ``hardware/kinect.yaml``, or the defaults when the hardware folder has no such file (an
+    installed package without the repository)."""
     if not (hardware.hardware_dir() / "kinect.yaml").is_file():
-        return CameraIntrinsics.kinect_v1(), CameraMount(), 2.0
-    timeout = hardware.load_hardware_file("kinect.yaml").get("frame_timeout_s", 2.0)
-    return hardware.kinect_intrinsics(), hardware.kinect_mount(), float(timeout)
+        return CameraIntrinsics.kinect_v1(), CameraMount(), 2.0, TILT_RANGE_DEG
+    data = hardware.load_hardware_file("kinect.yaml")
+    timeout = data.get("frame_timeout_s", 2.0)
+    if isinstance(timeout, bool) or not isinstance(timeout, (int, float)) or not 0 < timeout < math.inf:
+        raise DataFileError(data["__path__"], "frame_timeout_s", f"expected a positive number of seconds, got {timeout!r}")
+    tilt = TILT_RANGE_DEG
+    if "tilt_motor" in data:
+        tilt = (hardware.number(data, "tilt_motor", "min_deg", positive=False),
+                hardware.number(data, "tilt_motor", "max_deg", positive=False))
+    return hardware.kinect_intrinsics(), hardware.kinect_mount(), float(timeout), tilt
 
 
 class Kinect:
@@ -109,7 +116,7 @@ class Kinect:
             raise ValueError(f"depth_format must be one of {', '.join(FORMATS)}, got {depth_format!r}")
         if fakenect is not None and depth_format != "raw":
             raise ValueError("fakenect recordings replay raw 11-bit depth only: use depth_format='raw'")
-        hw_intrinsics, hw_mount, hw_timeout = _hardware_camera()
+        hw_intrinsics, hw_mount, hw_timeout, self.tilt_range_deg = _hardware_camera()
         self.device_index = device_index
         self.depth_format = depth_format
         self.intrinsics = intrinsics or hw_intrinsics
@@ -167,7 +174,10 @@ class Kinect:
             process.kill()  # stuck in a USB call
             process.wait(timeout=5.0)
         for stream in (process.stdin, process.stdout):
-            stream.close()
+            try:
+                stream.close()
+            except OSError:  # a request still buffered for a worker that is gone
+                pass
 
     def __enter__(self) -> "Kinect":
         return self.connect()
@@ -211,10 +221,11 @@ class Kinect:
         return DepthFrame(depth_m, intrinsics, self.mount, None, time.monotonic() - self._t0)
 
     def set_tilt(self, degrees: float) -> float:
-        """Move the tilt motor to ``degrees`` (positive up, clamped to ±27°); returns the angle set."""
+        """Move the tilt motor to ``degrees`` (positive up, clamped to the motor's range, ±27°);
+        returns the angle set."""
         if not math.isfinite(degrees):
             raise ValueError(f"tilt must be a finite angle in degrees, got {degrees}")
-        angle = max(TILT_RANGE_DEG[0], min(TILT_RANGE_DEG[1], float(degrees)))
+        angle = max(self.tilt_range_deg[0], min(self.tilt_range_deg[1], float(degrees)))
         self._command(f"tilt {angle}")
         self.tilt_motor_deg = angle
         return angle

@@ -15,6 +15,11 @@ Both read furniture relations through the spatial relation variables of disserta
 * **beside / between** — the DIST-SRV's ``superposition`` and ``near`` (:func:`closeness`),
   for ``between`` also a second item of the reference's kind close to the target.
 
+A reference is read as the item it is (:func:`~assistant.world.entity.as_item`): where perception fused two items into
+one track, the cells beyond what the catalogue's largest model of that category can reach from
+the detected centre are left out, so "in front of the couch" is not read from the other couch of
+an L.
+
 Relations to the floor plan are geometry, not SRVs: a room's side ("at the back of the room":
 how far along the room's extent, :func:`room_side_fit`), a wall ("against the left wall",
 :func:`wall_fit`), and a target named with no reference (the one most in view,
@@ -32,7 +37,7 @@ import numpy as np
 from assistant.geometry import Pose2D, wrap_angle
 from assistant.rdt import RDT
 from assistant.spatial.srv import DIST_CENTRES_M, DistSRV, dir_srv, dist_srv
-from assistant.world.entity import Entity
+from assistant.world.entity import Entity, as_item
 
 __all__ = [
     "DIRECTION_ANGLES", "Resolution", "closeness", "direction_weight", "nearness",
@@ -188,13 +193,13 @@ def relation_fit(rdt: RDT, reference: Entity | None, target: Entity, viewer: Pos
         return view_fit(target, viewer)
     if kind == "wall" and floorplan is not None:
         return FLOOR + wall_fit(target, viewer, rdt.direction, floorplan)
-    origin = reference if reference is not None else Entity.robot(viewer, target.grid)
+    origin = as_item(reference) if reference is not None else Entity.robot(viewer, target.grid)
     dist = dist_srv(origin, target)
     seen = _seen(target, viewer)
     if rdt.direction in ("beside", "between") and reference is not None:
         fit = (0.3 + 0.7 * seen) * max(closeness(dist), FLOOR)
         if rdt.direction == "between":  # a second item of the reference's kind close by
-            others = [closeness(dist_srv(r, target)) for r in perceived
+            others = [closeness(dist_srv(as_item(r), target)) for r in perceived
                       if r.name == reference.name and r.id not in (reference.id, target.id)]
             fit *= 0.5 + 0.5 * max(others, default=0.0)
         return fit

@@ -7,13 +7,16 @@ its functional front, or None for symmetric items such as tables).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
+from functools import lru_cache
 from enum import Enum
 
 import numpy as np
 
 from assistant.geometry import GridMap, Pose2D, ellipse
+from assistant.world.catalogue import load_catalogue
 
 
 class EntityKind(str, Enum):
@@ -106,3 +109,30 @@ class Entity:
                 "category": self.category, "room": self.room, "x": float(cx), "y": float(cy),
                 "facing": self.orientation_rad, "cells": int(len(self.cells)),
                 "confidence": self.confidence}
+
+
+@lru_cache(maxsize=None)
+def _largest_reach_m(category: str) -> float:
+    """Metres from the centre to a corner of the largest catalogue model of ``category`` (0 when
+    the catalogue has none)."""
+    return max((math.hypot(m.length_m, m.width_m) / 2 for m in load_catalogue().models.values()
+                if m.category == category), default=0.0)
+
+
+def as_item(entity: Entity) -> Entity:
+    """A perceived entity as the item it is: perception may fuse two items into one track (an
+    L of two couches seen as one couch, a bed with the table at its side), whose cells then
+    reach past anything of its category; the cells farther from the detector's centre
+    (``attributes["x"]``, ``["y"]``) than the largest catalogue model of its category reaches
+    are not part of that item. An entity without a detected centre or a known category is
+    returned as it is. The spatial layer reads references so, and the executor's line of sight
+    blockers."""
+    attrs = entity.attributes or {}
+    reach = _largest_reach_m(entity.category) if entity.category else 0.0
+    if reach <= 0 or "x" not in attrs or "y" not in attrs or not len(entity.cells):
+        return entity
+    offsets = entity.points_m() - np.array(entity.centre_m)
+    keep = np.hypot(offsets[:, 0], offsets[:, 1]) <= reach + entity.grid.resolution_m
+    if keep.all() or not keep.any():
+        return entity
+    return dataclasses.replace(entity, cells=entity.cells[keep])

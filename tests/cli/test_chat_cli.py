@@ -96,3 +96,24 @@ def test_ctrl_c_at_the_prompt_then_ctrl_c_leaves_at_once(tmp_path):
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
+
+
+def test_a_sighting_from_an_earlier_session_says_when_and_a_bad_entry_is_skipped(tmp_path):
+    import time
+
+    data = tmp_path / "data"
+    data.mkdir()
+    earlier = time.time() - 3 * 86400
+    (data / "memory.json").write_text(json.dumps({"version": 2, "sightings": [
+        {"object": ["mug"], "world": "apartment", "room": "bedroom"},  # malformed: skipped, reported
+        {"object": "mug", "world": "apartment", "room": "bedroom", "furniture": "roundtable_2",
+         "furniture_word": "table", "phrase": "on the table by the bed", "time_s": earlier}]}))
+    child = spawn(tmp_path)
+    child.expect("skipped sightings\\[0\\]")
+    child.expect_exact(PROMPT)
+    child.sendline("where is my mug")
+    when = time.strftime("%d %B", time.localtime(earlier)).lstrip("0")
+    child.expect(f"I saw your mug on {when}")
+    child.sendcontrol("d")
+    child.expect(pexpect.EOF)
+    child.close()

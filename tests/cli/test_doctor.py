@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
+import re
+
+import numpy as np
 
 import pytest
 
 from assistant.cli import main
-from assistant.cli.doctor import check_kinect_usb, check_serial_ports, check_udev_rules, run_checks
+from assistant.cli.doctor import check_kinect_usb, check_serial_ports, check_udev_rules, probe_kinect, run_checks
 from assistant.robot.p3dx.fake import FakeArcosController, Faults, patient_params, quick_params
 
 
@@ -117,3 +121,23 @@ def test_first_drive_moves_the_base_a_little_and_reports_the_odometry(capsys):
         assert 0.19 <= fake.x_m <= 0.26 and fake.commanded == (0.0, 0.0)
         assert max(arg for _, cmd, arg in fake.log.commands if cmd == 11) == 100  # VEL ≤ 100 mm/s
     assert status == (1 if out["counts"]["fail"] else 0)
+
+
+def test_kinect_probe_without_a_kinect_fails_with_the_adapters_reason():
+    pytest.importorskip("assistant.robot.kinect")
+    check = probe_kinect()
+    assert check.status == "fail" and check.detail and "hardware/README.md" in check.fix
+
+
+def test_kinect_probe_reads_a_frame_from_a_recording(tmp_path):
+    kinect = pytest.importorskip("assistant.robot.kinect")
+    recordings = pytest.importorskip("tests.robot.test_kinect")
+    if importlib.util.find_spec("freenect") is None or not any(
+            os.path.isdir(d) for d in kinect.FAKENECT_LIBRARY_DIRS):
+        pytest.skip("needs the freenect binding and fakenect")
+    wall = recordings.mm_to_raw_disparity(np.full((480, 640), 2000.0))
+    recordings.write_fakenect_recording(tmp_path / "rec", [wall] * 4, [1.0, 1.5, 2.0, 2.5])
+    check = probe_kinect(fakenect=tmp_path / "rec", depth_format="raw", timeout_s=3.0)
+    assert check.status == "ok", check
+    median = float(re.search(r"median ([0-9.]+) m", check.detail).group(1))
+    assert abs(median - 2.0) < 0.05 and "1.05 m high" in check.detail

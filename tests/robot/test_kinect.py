@@ -101,15 +101,16 @@ def test_depth_frames_through_fakenect(tmp_path):
 
 @needs_fakenect
 def test_a_silent_camera_times_out_and_can_be_read_again(tmp_path):
-    # 3 s of silence after the first frame
-    write_fakenect_recording(tmp_path / "rec", [_wall(2.0)] + [_wall(3.0)] * 4, [1.0, 4.0, 4.5, 5.0, 5.5])
-    with Kinect(fakenect=tmp_path / "rec", depth_format="raw", timeout_s=1.0) as kinect:
-        kinect.depth_frame()
+    # 5 s of silence after the first frame (ample, should this process be held up on a busy machine)
+    write_fakenect_recording(tmp_path / "rec", [_wall(2.0)] + [_wall(3.0)] * 4, [1.0, 6.0, 6.5, 7.0, 7.5])
+    with Kinect(fakenect=tmp_path / "rec", depth_format="raw", timeout_s=5.0) as kinect:
+        kinect.depth_frame()  # (a generous timeout for the first: the machine may be busy)
+        kinect.timeout_s = 1.0
         start = time.monotonic()
         with pytest.raises(KinectTimeoutError, match="within 1 s"):
             kinect.depth_frame()
         assert time.monotonic() - start < 1.5
-        kinect.timeout_s = 4.0
+        kinect.timeout_s = 8.0
         frame = kinect.depth_frame()  # the camera is still open; the late frame arrives
         assert np.allclose(frame.depth_m[20:], 3.0, atol=0.02)
 

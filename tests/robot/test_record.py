@@ -100,6 +100,8 @@ def test_recording_robot_passes_extras_through_and_keeps_the_first_file(tmp_path
         assert robot.ground_truth_pose == robot.inner.ground_truth_pose  # the simulator's own attribute
         frame = robot.depth_frame()
         assert frame.hit_ids is not None  # evaluation data passes through (it is not recorded)
+        # the simulator's depth is whole millimetres already: recording it changes nothing
+        assert np.array_equal(frame.depth_m, robot.inner.depth_frame().depth_m)
         assert robot.depth_frame() is frame  # an unchanged frame is not written twice
     with pytest.raises(AssistantError, match="exists"):
         robot.connect()

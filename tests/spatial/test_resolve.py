@@ -118,3 +118,28 @@ def test_fits_are_in_zero_one_and_nothing_perceived_is_no_reading(apartment):
     assert resolve(RDT("couch", "front", "desk"), furniture, viewer) == []  # no such target
     table = next(e for e in furniture if e.name == "table")
     assert relation_fit(RDT("robot", "front", "table"), None, table, viewer) > 0
+
+
+def test_a_reference_fused_with_its_neighbour_is_read_as_the_item_it_is(all_worlds):
+    """Perception may report an L of two couches as one couch track whose cells reach over the
+    other couch; "in front of the couch" is still the table before the couch the track is
+    centred on, not a table by the far end of the other couch."""
+    import dataclasses
+
+    import numpy as np
+
+    from assistant.world.entity import as_item
+
+    world = all_worlds["two-bedrooms-house"]
+    items = {e.id: e for e in _room(world, "living room")}
+    couch, other = items["couch_1"], items["couch_2"]
+    cells = np.unique(np.vstack([couch.cells, other.cells]), axis=0)
+    cx, cy = couch.centre_m
+    fused = dataclasses.replace(couch, id="track:0", cells=cells, category="couch",
+                                attributes={"x": cx, "y": cy})
+    assert len(as_item(fused).cells) < len(cells)  # the other couch's far end is not this couch
+    assert len(as_item(dataclasses.replace(fused, cells=couch.cells)).cells) == len(couch.cells)
+    tables = [e for e in items.values() if e.name == "table"]
+    viewer = Pose2D(-1.0, 3.34, -1.0)
+    best = resolve(RDT("couch", "front", "table"), [fused, *tables], viewer, floorplan=world.floorplan)[0]
+    assert best.target.id == "roundtable_1"

@@ -7,6 +7,7 @@ import signal
 import subprocess
 import sys
 import textwrap
+import time
 
 import psutil
 
@@ -20,8 +21,31 @@ def listening(pid: int) -> list[tuple[str, int]]:
             if c.status == psutil.CONN_LISTEN]
 
 
-def listening_ports() -> set[int]:
-    return {c.laddr.port for c in psutil.net_connections(kind="tcp") if c.status == psutil.CONN_LISTEN}
+def socket_inodes(pid: int) -> set[str]:
+    """The inodes of the sockets process ``pid`` holds open (``/proc/PID/fd``)."""
+    out = set()
+    for fd in os.listdir(f"/proc/{pid}/fd"):
+        try:
+            target = os.readlink(f"/proc/{pid}/fd/{fd}")
+        except OSError:
+            continue
+        if target.startswith("socket:["):
+            out.add(target[8:-1])
+    return out
+
+
+def listening_inodes() -> set[str]:
+    """Inodes of every listening TCP socket of the machine (``/proc/net/tcp``, ``tcp6``): a
+    socket is matched by inode, not port, since other programs may reuse a port at once."""
+    out = set()
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        with open(table) as handle:
+            next(handle)
+            for line in handle:
+                fields = line.split()
+                if fields[3] == "0A":  # TCP_LISTEN
+                    out.add(fields[9])
+    return out
 
 
 def test_every_socket_of_the_view_server_is_on_loopback():
@@ -48,10 +72,14 @@ def test_kill_9_of_the_parent_leaves_no_server_and_no_listening_socket():
                               env=dict(os.environ, PYTHONWARNINGS="ignore"))
     try:
         server_pid = int(parent.stdout.readline())
-        ports = {port for _, port in listening(server_pid)}
-        assert ports
+        assert listening(server_pid)
+        sockets = socket_inodes(server_pid) & listening_inodes()
+        assert sockets
     finally:
         parent.send_signal(signal.SIGKILL)
         parent.wait()
-    assert gone(server_pid, timeout_s=5.0), "the server outlived its parent"
-    assert not ports & listening_ports()
+    assert gone(server_pid, timeout_s=15.0), "the server outlived its parent"
+    deadline = time.monotonic() + 10.0  # the kernel closes them as the process ends
+    while sockets & listening_inodes() and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert not sockets & listening_inodes()

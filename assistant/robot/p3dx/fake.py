@@ -157,7 +157,7 @@ class FakeArcosController:
                     os.close(fd)
             self._master = self._slave = -1
 
-    def wait_until(self, predicate, timeout_s: float = 1.0) -> bool:
+    def wait_until(self, predicate, timeout_s: float = 3.0) -> bool:
         """Poll ``predicate()`` until true or ``timeout_s`` passes (the fake reads every 10 ms)."""
         deadline = time.monotonic() + timeout_s
         while time.monotonic() < deadline:
@@ -193,8 +193,8 @@ class FakeArcosController:
                 self._watchdog(now)
                 self._integrate(now - last)
             last = now
-            if now >= next_sip:
-                next_sip += self.params.sip_period_s
+            if now >= next_sip:  # on time, or at once after a stall (no burst of late SIPs)
+                next_sip = max(next_sip + self.params.sip_period_s, now)
                 if self._open:
                     self._send_sip()
             time.sleep(_TICK_S)

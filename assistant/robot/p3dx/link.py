@@ -29,7 +29,7 @@ from assistant.robot.errors import HandshakeError, LinkLostError, SerialPortErro
 from assistant.robot.frames import Odometry
 from assistant.robot.p3dx.commands import CLOSE, OPEN, PULSE, Command, command_payload
 from assistant.robot.p3dx.odometry import OdometryTracker
-from assistant.robot.p3dx.packet import PacketDecoder, encode_packet
+from assistant.robot.p3dx.packet import DecoderStats, PacketDecoder, encode_packet
 from assistant.robot.p3dx.params import P3DXParams
 from assistant.robot.p3dx.sip import Sip, SipError, is_sip, parse_sip
 
@@ -38,6 +38,8 @@ __all__ = ["ArcosLink", "ControllerInfo"]
 log = logging.getLogger(__name__)
 
 _READ_TIMEOUT_S = 0.02
+#: how long after ENABLE a "motors off" flag in a SIP is still taken for the controller's delay
+MOTORS_GRACE_S = 1.0
 
 
 @dataclass(frozen=True)
@@ -103,6 +105,7 @@ class ArcosLink:
         self._command = (0, 0)  # (mm/s, deg/s) being driven
         self._last_sent = 0.0
         self._last_call = 0.0  # the client's last call (touch)
+        self._enabled_at = 0.0  # when ENABLE was sent
         self._last_sip_at = 0.0
         self._last_bytes_at = 0.0
         self._bad_sips = 0
@@ -187,6 +190,7 @@ class ArcosLink:
             self._write(command_payload(command, argument))
         if self.enable_motors:
             self._write(command_payload(Command.ENABLE, 1))
+            self._enabled_at = time.monotonic()
 
     # ------------------------------------------------------------------ commands
     def touch(self) -> None:
@@ -228,6 +232,19 @@ class ArcosLink:
         with self._state_lock:
             assert self._odometry is not None  # open() waited for the first SIP
             return self._odometry
+
+    @property
+    def motors_disabled(self) -> bool:
+        """True when the latest SIP, received a second or more after ENABLE, says the motors are off
+        (the second lets the controller act on ENABLE before its flag is believed)."""
+        sip = self._sip
+        return (sip is not None and not sip.motors_enabled
+                and self._last_sip_at - self._enabled_at > MOTORS_GRACE_S)
+
+    @property
+    def line_stats(self) -> DecoderStats:
+        """Packets decoded, bad checksums and bytes skipped on this link so far."""
+        return self._decoder.stats
 
     @property
     def last_sip(self) -> Sip | None:
@@ -282,7 +299,9 @@ class ArcosLink:
                     self._handle_sip(payload, now)
             silent_for = now - self._last_sip_at
             limit = p.link_watchdog_s if self._first_sip.is_set() else p.handshake_timeout_s
-            if silent_for > limit:
+            # judge once the line is drained (a thread the machine held up reads what queued
+            # meanwhile first), but never later than two watchdog periods
+            if silent_for > limit and (silent_for > 2 * limit or not self._pending()):
                 garbled = self._last_bytes_at > self._last_sip_at
                 self._fail("garbled data" if garbled else "silent controller",
                            f"no valid status packet for {silent_for:.2f} s"
@@ -355,6 +374,14 @@ class ArcosLink:
         with self._write_lock:
             port.write(encode_packet(payload))
             self._last_sent = time.monotonic()
+
+    def _pending(self) -> int:
+        """Bytes waiting in the port (0 when it cannot tell): a late thread reads them first."""
+        port = self._serial
+        try:
+            return port.in_waiting if port is not None else 0
+        except (OSError, _serial_exception()):
+            return 0
 
     def _read(self) -> bytes:
         port = self._serial

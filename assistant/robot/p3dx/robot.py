@@ -20,7 +20,6 @@ import dataclasses
 import logging
 import math
 import time
-import weakref
 from typing import Protocol, runtime_checkable
 
 from assistant.errors import AssistantError
@@ -35,7 +34,8 @@ __all__ = ["DepthCamera", "P3DX", "p3dx_robot_from_spec"]
 
 log = logging.getLogger(__name__)
 
-_OPEN_ROBOTS: "weakref.WeakSet[P3DX]" = weakref.WeakSet()
+#: every connected P3DX (strong references: a robot dropped without close() is still stopped at exit)
+_OPEN_ROBOTS: "set[P3DX]" = set()
 _POLL_S = 0.02
 
 
@@ -94,6 +94,12 @@ class P3DX(Robot):
         sip = self._live_link().last_sip
         return None if sip is None else sip.battery_v
 
+    @property
+    def line_stats(self):
+        """The serial line's health: packets decoded, bad checksums, bytes skipped (DecoderStats)."""
+        self._require("read the line statistics")
+        return self._live_link().line_stats
+
     def sonar_m(self) -> dict[int, float]:
         """The latest sonar ranges (metres) by sonar number."""
         self._require("read the sonar")
@@ -108,9 +114,11 @@ class P3DX(Robot):
             opener = getattr(self.camera, "connect", None) or getattr(self.camera, "open", None)
             if callable(opener) and not getattr(self.camera, "is_connected", False):
                 opener()
-        except BaseException:
+        except BaseException as error:
             self._link = None
             link.close()
+            log.error("%s: the camera did not start (%s); the base is closed again. To drive without "
+                      "it, use the robot spec p3dx:%s:nocamera", self.name, error, self.port)
             raise
         self._stop_reason = None
         _OPEN_ROBOTS.add(self)
@@ -151,8 +159,7 @@ class P3DX(Robot):
         angular = max(-p.max_angular_rad_s, min(p.max_angular_rad_s, angular_rad_s))
         link = self._live_link()
         command = (int(round(linear * 1000)), int(round(math.degrees(angular))))
-        sip = link.last_sip
-        if command != (0, 0) and sip is not None and not sip.motors_enabled:
+        if command != (0, 0) and link.motors_disabled:
             link.stop("motors disabled")
             raise MotorsDisabledError(self.name)
         link.drive(*command)

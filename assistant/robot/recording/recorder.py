@@ -13,8 +13,8 @@ happens (:class:`~assistant.robot.recording.writer.SessionWriter`).
 The caller receives each reading *as the recording holds it* — depth in whole millimetres, times
 in whole nanoseconds, headings through a quaternion — so a replay of the file gives the caller
 exactly what the live session gave it, and a deterministic task makes the same decisions on the
-replay. (For the simulator this rounds depth to 1 mm, far below the Kinect's noise; a real
-Kinect already delivers whole millimetres.) Evaluation-only data (the simulator's hit ids) is
+replay. (Depth is whole millimetres already from a real Kinect and from the simulator's noise
+model; headings change in their last bits.) Evaluation-only data (the simulator's hit ids) is
 passed through but not recorded.
 """
 
@@ -85,12 +85,12 @@ class RecordingRobot(Robot):
             self.inner.close()
 
     def _odometry(self) -> Odometry:
-        odometry = _as_recorded_odometry(self.inner.odometry())
-        key = (odometry.timestamp_s, odometry.pose, odometry.linear_m_s, odometry.angular_rad_s)
+        live = self.inner.odometry()
+        key = (live.timestamp_s, live.pose, live.linear_m_s, live.angular_rad_s)
         if key != self._last_odometry_key:
-            self.writer.write_odometry(odometry)
+            self.writer.write_odometry(live)  # the live values: encoding twice would change headings
             self._last_odometry_key = key
-        return odometry
+        return _as_recorded_odometry(live)
 
     def _depth_frame(self) -> DepthFrame:
         live = self.inner.depth_frame()
@@ -100,7 +100,7 @@ class RecordingRobot(Robot):
         pose = None if live.robot_pose is None else msgs.round_trip_pose(live.robot_pose)
         frame = DepthFrame(msgs.depth_from_millimetres(millimetres), live.intrinsics, _as_recorded_mount(live.mount),
                            pose, msgs.from_ns(msgs.to_ns(live.timestamp_s)), live.hit_ids, live.hit_names)
-        self.writer.write_frame(millimetres, frame.intrinsics, frame.mount, frame.robot_pose, frame.timestamp_s)
+        self.writer.write_frame(millimetres, live.intrinsics, live.mount, live.robot_pose, live.timestamp_s)
         self._last_inner_frame, self._last_frame = live, frame
         return frame
 
@@ -117,7 +117,7 @@ class RecordingRobot(Robot):
         self.inner.advance(seconds)
 
     def _time_s(self) -> float:
-        return self.inner.time_s
+        return msgs.from_ns(msgs.to_ns(self.inner.time_s))  # the clock as a replay of this file keeps it
 
     def _bumped(self) -> bool:
         return self.inner.bumped

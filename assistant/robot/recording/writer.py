@@ -152,4 +152,9 @@ class SessionWriter:
 
 
 def _utc_now() -> str:
-    return datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
+    """Now in UTC, or ``$SOURCE_DATE_EPOCH`` when set (the reproducible-builds convention), so a
+    recording regenerated from the same commands is the same file byte for byte."""
+    fixed = os.environ.get("SOURCE_DATE_EPOCH")
+    when = (datetime.datetime.fromtimestamp(int(fixed), datetime.timezone.utc) if fixed and fixed.isdigit()
+            else datetime.datetime.now(datetime.timezone.utc))
+    return when.isoformat(timespec="seconds")

@@ -26,9 +26,21 @@ def params() -> P3DXParams:
 
 
 @pytest.fixture
-def fake(params):
-    """A fake controller with the test's ``params``; closed (thread joined) after the test."""
+def robots():
+    """Robots a test opens outside a ``with`` block: closed after it, even when it fails."""
+    opened: list = []
+    yield opened
+    for robot in opened:
+        robot.close()
+
+
+@pytest.fixture
+def fake(params, robots):
+    """A fake controller with the test's ``params``; closed (thread joined) after the test, after
+    the test's robots, and then no driver or controller thread may be left."""
     controller = FakeArcosController(params, faults=Faults())
     yield controller
+    for robot in robots:
+        robot.close()
     controller.close()
     assert not reader_threads(), f"threads left behind: {reader_threads()}"

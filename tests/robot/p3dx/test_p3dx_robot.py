@@ -8,10 +8,12 @@ import pytest
 
 from assistant.errors import AssistantError
 from assistant.robot import make_robot
-from assistant.robot.errors import MotorsDisabledError, NoCameraError, SerialPortError
+from assistant.robot.errors import MotorsDisabledError, NoCameraError, RobotConnectionError, SerialPortError
 from assistant.robot.p3dx import P3DX
 from assistant.robot.p3dx.commands import Command
 from assistant.robot.p3dx.fake import FakeArcosController, Faults, FloorCamera, quick_params
+
+from .conftest import reader_threads
 
 
 def _advance_until(robot, predicate, timeout_s=2.0):
@@ -164,7 +166,27 @@ def test_reconnect_after_close_starts_a_new_session(fake, params):
 def test_disabled_motors_are_a_clear_error(params):
     with FakeArcosController(params, faults=Faults(motors_off=True)) as fake:
         with P3DX(fake.port, params=params) as robot:
+            robot.advance(2.0)  # past the controller's second to act on ENABLE
             with pytest.raises(MotorsDisabledError, match="MOTORS button"):
                 robot.send_velocity(0.2, 0.0)
             robot.stop()  # stopping is always allowed
             assert robot.stop_reason == "stop()"
+
+
+def test_a_camera_that_does_not_start_closes_the_base_again(fake, params):
+    class DeadCamera(FloorCamera):
+        def connect(self):
+            raise RobotConnectionError("no Kinect found")
+
+    robot = P3DX(fake.port, DeadCamera(), params=params)
+    with pytest.raises(RobotConnectionError, match="no Kinect"):
+        robot.connect()
+    assert not robot.is_connected
+    assert fake.wait_until(lambda: fake.log.closed == 1)
+    assert not [t for t in reader_threads() if t.name.startswith("arcos-reader")]
+
+
+def test_the_default_camera_is_the_kinect_adapter(fake, params):
+    kinect = pytest.importorskip("assistant.robot.kinect")
+    robot = make_robot(f"p3dx:{fake.port}", params=params)
+    assert isinstance(robot.camera, kinect.Kinect)

@@ -1,0 +1,115 @@
+"""What a person waits for: the chat's first reply after its greeting, and the longest silence
+of a command run in a terminal.
+
+``first-reply``: start ``assistant chat --world apartment`` in a pseudo-terminal (as ``make
+run`` does, after ``assistant warm-up``), wait for the greeting, type a first command at once,
+and time from the greeting to the robot's first words. Target ≤ 2 s. Repeated ``--repeats``
+times; the median and the worst are printed.
+
+``silence``: run one command in a pseudo-terminal (so progress is shown as a person sees it)
+and report the longest time with no new output while it runs. Target ≤ 3 s. ``--fresh-cache``
+runs it on an empty model cache (first use: every model trains).
+
+    .venv/bin/python benchmarks/bench_trust.py first-reply [--repeats 5]
+    .venv/bin/python benchmarks/bench_trust.py silence [--fresh-cache] -- assistant parse "go to the kitchen"
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pexpect
+
+ROOT = Path(__file__).resolve().parents[1]
+FIRST_COMMAND = "where is my mug?"
+
+
+def _env(extra: dict | None = None) -> dict:
+    env = dict(os.environ, PYTHONPATH=str(ROOT), TERM="xterm", PYTHONWARNINGS="ignore")
+    env.update(extra or {})
+    return env
+
+
+def first_reply(data_dir: str) -> float:
+    """Seconds from the greeting to the robot's first reply to :data:`FIRST_COMMAND`."""
+    child = pexpect.spawn(sys.executable, ["-m", "assistant", "chat", "--world", "apartment"],
+                          env=_env({"ASSISTANT_DATA": data_dir}), encoding="utf-8", timeout=300,
+                          dimensions=(40, 200))
+    try:
+        child.expect("Hello!")
+        greeted = time.monotonic()
+        child.expect("you> ")
+        child.sendline(FIRST_COMMAND)
+        child.expect_exact(FIRST_COMMAND)  # the echo of what was typed
+        child.expect(r"\S")  # the first character the robot prints after it
+        return time.monotonic() - greeted
+    finally:
+        child.sendcontrol("c")
+        child.sendcontrol("c")
+        child.close(force=True)
+
+
+def longest_silence(command: list[str], env: dict) -> tuple[float, float, int, str]:
+    """(longest gap between outputs, total seconds, exit status, what was printed after the
+    gap) of ``command`` on a pty."""
+    child = pexpect.spawn(command[0], command[1:], env=env, encoding="utf-8", timeout=None,
+                          dimensions=(40, 200))
+    start = last = time.monotonic()
+    longest, after = 0.0, ""
+    while True:
+        try:
+            text = child.read_nonblocking(4096, timeout=0.05)
+            now = time.monotonic()
+            if now - last > longest:
+                longest, after = now - last, text
+            last = now
+        except pexpect.TIMEOUT:
+            continue
+        except pexpect.EOF:
+            break
+    end = time.monotonic()
+    if end - last > longest:
+        longest, after = end - last, "(the end)"
+    child.close()
+    return longest, end - start, child.exitstatus if child.exitstatus is not None else -1, after
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="what", required=True)
+    first = sub.add_parser("first-reply")
+    first.add_argument("--repeats", type=int, default=5)
+    silence = sub.add_parser("silence")
+    silence.add_argument("--fresh-cache", action="store_true")
+    silence.add_argument("command", nargs=argparse.REMAINDER)
+    args = parser.parse_args()
+    if args.what == "first-reply":
+        with tempfile.TemporaryDirectory() as data:
+            times = [first_reply(data) for _ in range(args.repeats)]
+        print(f"first reply after the greeting: median {statistics.median(times):.2f} s, "
+              f"worst {max(times):.2f} s over {len(times)} chats (target <= 2 s)")
+        return 0
+    command = [c for c in args.command if c != "--"]
+    if command and command[0] == "assistant":
+        command = [sys.executable, "-m", "assistant", *command[1:]]
+    cache = tempfile.mkdtemp(prefix="fresh-cache-") if args.fresh_cache else None
+    try:
+        env = _env({"ASSISTANT_CACHE": cache} if cache else None)
+        longest, total, status, after = longest_silence(command, env)
+    finally:
+        if cache:
+            shutil.rmtree(cache, ignore_errors=True)
+    print(f"longest silence {longest:.2f} s in {total:.1f} s (exit {status}; target <= 3 s): "
+          f"{' '.join(args.command)}\n  the longest silence ended with: {after.strip()[:120]!r}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,105 @@
+"""Bad input from the trust review (issue 21): each a one-line message with exit 2, or correct
+behaviour — never a traceback, a hang or a silent wrong answer."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from assistant.cli import main
+from assistant.cli.common import join_negative_values
+from assistant.grounding.parser import MAX_CHARS as MAX_COMMAND_CHARS
+
+
+def run(argv, capsys):
+    try:
+        code = main(argv)
+    except SystemExit as exit_:  # argparse's usage errors
+        code = exit_.code
+    out = capsys.readouterr()
+    assert "Traceback" not in out.err
+    return code, out.out, out.err
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["fetch", "", "--world", "apartment"], "the command is empty"),
+    (["fetch", "x" * (MAX_COMMAND_CHARS + 1), "--world", "apartment"], "characters"),
+    (["relations", "--world", "apartment", "--resolution", "0.0001"], "--resolution must be from 0.01"),
+    (["sim", "render", "apartment", "--pose", "1,1,0", "--out", "somewhere/"], "is a folder"),
+    (["sim", "render", "apartment", "--pose", "1,1,0", "--out", "x.png", "--seed", "-1"], "a seed is from 0"),
+    (["sim", "render", "apartment", "--pose", "1,1,0", "--out", "x.png", "--tilt", "inf"], "finite number"),
+    (["sim", "render", "apartment", "--pose", "1,1,0", "--out", "x.png", "--tilt", "400"], "--tilt must be"),
+    (["perceive", "--depth", "d.png", "--intrinsics", "1,1,1,1", "--depth-scale", "0.001", "--tilt", "inf"],
+     "finite number"),
+    (["perceive", "--depth", "d.png", "--intrinsics", "1,1,1,1", "--depth-scale", "0.001",
+      "--camera-height", "nan"], "finite number"),
+    (["perceive", "--world", "apartment", "--pose", "-100,0.75,3.14"], "outside the map"),
+])
+def test_bad_values_get_one_line_and_status_2(argv, words, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(argv, capsys)
+    assert code == 2 and words in err.strip().splitlines()[-1], err  # argparse's usage lines come first
+
+
+def test_a_negative_pose_is_a_value_not_an_option():
+    assert join_negative_values(["perceive", "--pose", "-1.8,0.75,3.14", "--json"]) == \
+        ["perceive", "--pose=-1.8,0.75,3.14", "--json"]
+    assert join_negative_values(["x", "--seed", "-1"]) == ["x", "--seed", "-1"]  # one number: argparse's own
+
+
+def test_a_negative_pose_is_accepted_on_the_command_line(capsys, tmp_path):
+    out_png = tmp_path / "view.png"
+    code, out, err = run(["sim", "render", "apartment", "--pose", "-1.8,0.75,3.14", "--out", str(out_png),
+                          "--json"], capsys)
+    assert code == 0, err
+    pose = json.loads(out)["robot_pose"]
+    assert (pose["x"], pose["y"]) == (-1.8, 0.75) and out_png.is_file()
+
+
+@pytest.fixture
+def pngs(tmp_path):
+    grey = tmp_path / "grey.png"
+    Image.fromarray(np.full((48, 64), 100, np.uint8)).save(grey)
+    big = tmp_path / "big.png"
+    Image.new("I;16", (5000, 5000)).save(big)  # compresses to a few kilobytes
+    bomb = tmp_path / "bomb.png"
+    Image.new("L", (12000, 12000)).save(bomb)
+    return grey, big, bomb
+
+
+def test_pictures_that_are_not_depth_frames_are_refused(pngs, capsys):
+    grey, big, bomb = pngs
+    for path, words in ((grey, "is not depth"), (big, "more than a depth camera gives"), (bomb, "pixels")):
+        code, out, err = run(["perceive", "--depth", str(path), "--intrinsics", "500,500,32,24",
+                              "--depth-scale", "0.001"], capsys)
+        assert code == 2 and words in err, err
+
+
+def test_a_batch_answers_every_line(tmp_path, capsys):
+    batch = tmp_path / "requests.jsonl"
+    batch.write_bytes(b'{"text": "the mug", "world": "apartment", "seed": 1e400}\n'
+                      b'\xff\xfe{"text": "x"}\n'
+                      b'[1, 2]\n'
+                      b'{"text": "go", "world": "apartment", "seed": -1}\n'
+                      b'{"text": "", "world": "apartment"}\n'
+                      b'{"text": "go", "world": ["apartment"]}\n' + b"x" * 70_000 + b"\n")
+    code, out, err = run(["fetch", "--batch", str(batch), "--json"], capsys)
+    answers = [json.loads(line) for line in out.splitlines()]
+    assert code == 0 and [a["line"] for a in answers] == [1, 2, 3, 4, 5, 6, 7]
+    assert all("error" in a for a in answers)
+    assert "out of range" in answers[0]["error"] and "UTF-8" in answers[1]["error"]
+
+
+def test_a_pasted_page_is_refused_before_any_work(capsys):
+    import time
+
+    from assistant.grounding import CommandParser
+
+    parser = CommandParser.load()
+    started = time.perf_counter()
+    with pytest.raises(Exception, match="characters, more than"):
+        parser.parse("mug " * 250_000)
+    assert time.perf_counter() - started < 0.5
