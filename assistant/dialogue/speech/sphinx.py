@@ -25,8 +25,8 @@ from assistant.dialogue.speech.audio import to_pcm16
 from assistant.dialogue.speech.errors import RecogniserError, require
 from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
 
-#: decoder settings: pocketsphinx's language weights, wider beams than its defaults (12.2 % against
-#: 14.3 % word error on 55 clean test utterances, docs/speech.md), dither with a fixed seed
+#: decoder settings: pocketsphinx's language weights, wider beams than its defaults (fewer word
+#: errors in development, docs/speech.md), dither with a fixed seed
 DECODER_SETTINGS = {"dither": True, "seed": 1, "beam": 1e-60, "wbeam": 1e-40, "pbeam": 1e-60,
                     "loglevel": "FATAL"}
 FILLERS = frozenset({"<s>", "</s>", "<sil>", "<unk>"})
