@@ -4,6 +4,7 @@ An RDT reads ``reference-direction-target`` (dissertation 4.3 II.B and Table 5-1
 ``couch-front-table`` is "the table in front of the couch"; ``move-left-non`` is "turn left".
 
 * the *reference* is ``move`` or ``robot`` (the robot itself, its pose when the node began),
+  ``stop`` (``stop-center-non``: stay where the robot is; "stop there"),
   ``room``, ``wall`` or ``door`` (floor-plan structures), or a furniture word;
 * the *direction* is one of :data:`DIRECTIONS`;
 * the *target* is a furniture word, or :data:`NO_TARGET` (``non``: the robot goes to a place,
@@ -29,15 +30,15 @@ NO_TARGET = "non"
 #: the directions of the RDT model
 DIRECTIONS = ("front", "back", "left", "right", "center", "beside", "between")
 #: reference words that mean the robot itself (its pose when the node began)
-ROBOT_REFERENCES = frozenset({"move", "robot"})
+ROBOT_REFERENCES = frozenset({"move", "robot", "stop"})
 #: reference words that are floor-plan structures rather than furniture
 FLOORPLAN_REFERENCES = frozenset({"room", "wall", "door"})
 #: reference words that are not furniture (dissertation 4.3 II.B, Fig. 1)
-STRUCTURE_REFERENCES = ("move", "room", "wall", "door", "robot")
+STRUCTURE_REFERENCES = ("move", "room", "wall", "door", "robot", "stop")
 #: references that name a place rather than a thing to perceive (robot, floor plan)
 PLACE_REFERENCES = ROBOT_REFERENCES | FLOORPLAN_REFERENCES
 #: references whose node needs no furniture perception (a dynamic description)
-DYNAMIC_REFERENCES = frozenset({"move", "room", "wall", "door"})
+DYNAMIC_REFERENCES = frozenset({"move", "room", "wall", "door", "stop"})
 
 
 class RDTNameError(AssistantError, ValueError):

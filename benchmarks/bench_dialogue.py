@@ -51,7 +51,7 @@ def main() -> int:
     args = ap.parse_args()
 
     from assistant.dialogue import DialogueManager, ObjectMemory, Services
-    from assistant.dialogue import services as services_module
+    from assistant.app import stopping as stopping_module
     from assistant.world import load_world
 
     world = load_world(args.world)
@@ -83,14 +83,14 @@ def main() -> int:
     motion, stops = [], []
     if args.motion:
         first_motion = {}
-        original = services_module.StoppableRobot.__getattr__
+        original = stopping_module.StoppableRobot.__getattr__
 
         def spy(self, name):
             if name == "send_velocity" and "t" not in first_motion:
                 first_motion["t"] = time.perf_counter()
             return original(self, name)
 
-        services_module.StoppableRobot.__getattr__ = spy
+        stopping_module.StoppableRobot.__getattr__ = spy
         try:
             for _ in range(args.motion):
                 first_motion.clear()
@@ -109,7 +109,7 @@ def main() -> int:
                     stops.append(time.perf_counter() - stopped_at)
                 manager.close(timeout=60.0)
         finally:
-            services_module.StoppableRobot.__getattr__ = original
+            stopping_module.StoppableRobot.__getattr__ = original
 
     everything = [t for v in times.values() for t in v]
     print(f"models loaded in {load_s:.1f} s (parser, describer, environment, fetch runner; from the cache)")

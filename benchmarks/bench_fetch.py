@@ -34,11 +34,11 @@ def main() -> int:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--perception", choices=("sensed", "oracle", "both"), default="both")
     args = parser.parse_args()
-    from assistant.executor.trial import FetchRunner
+    from assistant.app import Fetcher
 
-    runner = FetchRunner()
+    fetcher = Fetcher()
     t0 = time.perf_counter()
-    warm = runner.run(*COMMANDS[0][:3], "sensed", object_name=COMMANDS[0][3])
+    warm = fetcher.fetch(*COMMANDS[0][:3], "sensed", object_name=COMMANDS[0][3])
     print(f"warm-up (loads parser, policy models, detector): {time.perf_counter() - t0:.1f} s "
           f"(that fetch: {warm.data['wall_seconds']:.1f} s)")
     modes = ("sensed", "oracle") if args.perception == "both" else (args.perception,)
@@ -46,7 +46,7 @@ def main() -> int:
         walls, sims, ok = [], [], 0
         for _ in range(args.repeats):
             for text, world, scene, obj in COMMANDS:
-                data = runner.run(text, world, scene, mode, object_name=obj).data
+                data = fetcher.fetch(text, world, scene, mode, object_name=obj).data
                 walls.append(data["wall_seconds"])
                 sims.append(data["sim_seconds"])
                 ok += bool(data["success"])

@@ -53,15 +53,14 @@ def main() -> int:
 
             with open(args.searches, "rb") as fh:
                 saved = pickle.load(fh)
-        detector = None
+        finder = None
         for case in cases:
             result = saved.get((case.world_name, case.scene, case.obj.name))
             if result is None:
-                from assistant.executor.search import search_for
-                from assistant.perception import FurnitureDetector
+                from assistant.app import Finder
 
-                detector = detector or FurnitureDetector()
-                result = search_for(case.obj.name, case.world, case.scene, furniture_detector=detector)
+                finder = finder or Finder()
+                result = finder.search(case.obj.name, case.world, case.scene)
             searches.append((case.world, result))
     first = None
     all_ms = []

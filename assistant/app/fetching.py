@@ -8,8 +8,8 @@ robot's own object detector sees in the final frame and — on the simulator, af
 ended — how many pixels of the object the frame holds (the hit ids, evaluation only: the task
 never reads them). Success (Table 5-4, our threshold,
 :func:`~assistant.executor.trial.is_visible`): the task succeeded and the object covers at
-least 50 pixels at most 4.5 m away; on a robot without hit ids, the task succeeded and its own
-detector sees the object.
+least 50 pixels at most 4.5 m away; on a robot without hit ids (a replay, hardware) the task's
+own result stands.
 """
 
 from __future__ import annotations
@@ -34,12 +34,15 @@ class Fetcher:
 
     ``grounder``: the grounding model name (None = the default); ``noise``: the simulator's
     odometry noise (the localizer corrects it); ``parser`` / ``policies`` / ``detector``: given
-    parts instead of the default ones; ``max_sim_seconds``: the robot-time budget of a fetch.
+    parts instead of the default ones; ``max_sim_seconds``: the robot-time budget of a fetch;
+    ``taught``: train the policies on the user's taught demonstrations too (the product does,
+    the evaluations do not).
     """
 
     def __init__(self, grounder: str | None = None, noise: bool = True, policies=None, detector=None,
-                 parser=None, max_sim_seconds: float = FETCH_BUDGET_S):
+                 parser=None, max_sim_seconds: float = FETCH_BUDGET_S, taught: bool = False):
         self.grounder = grounder
+        self.taught = taught
         self.noise = noise
         self._policies = policies
         self._detector = detector
@@ -66,7 +69,7 @@ class Fetcher:
         if self._policies is None:
             from assistant.policy.library import PolicyLibrary
 
-            self._policies = PolicyLibrary()
+            self._policies = PolicyLibrary(taught=self.taught)
         return self._policies
 
     @property
@@ -81,7 +84,8 @@ class Fetcher:
               robot: str = DEFAULT_ROBOT, seed: int = 0, object_name: str | None = None, on_event=None,
               stop=None, on_pose=None) -> Result:
         """Carry out the fetch command ``text`` in ``world`` (a name or
-        :class:`~assistant.world.World`) with the robot ``robot`` (a robot spec) and
+        :class:`~assistant.world.World`) with the robot ``robot`` (a robot spec, or an
+        unconnected robot such as a replay) and
         ``perception`` (``sensed`` or ``oracle`` furniture). ``object_name`` overrides the
         plan's object for judging the end (the dev set says which object a command is about);
         ``on_event(name, data)`` gets the task's events; ``stop`` (a
@@ -135,7 +139,7 @@ def _judge_end(world, scene: str, obj: str | None, outcome, frame, detector, fur
     detected = bool(obj) and any(s.name == obj for s in in_view)
     if not outcome.success:
         failure = outcome.status.value
-    elif not (is_visible(visibility) if visibility is not None else detected):
+    elif not (is_visible(visibility) if visibility is not None else outcome.success):
         failure = Status.NOT_VISIBLE.value
     else:
         failure = None
@@ -148,7 +152,7 @@ def _fetch_fields(text, world, scene, perception, seed, robot, plan, obj, outcom
     p = outcome.final_pose
     return {
         "text": text, "world": world.name, "scene": scene, "perception": perception, "seed": seed,
-        "robot": str(robot), "plan": plan.to_dict(), "object": obj,
+        "robot": robot if isinstance(robot, str) else type(robot).__name__, "plan": plan.to_dict(), "object": obj,
         "nodes": [n.to_dict() for n in outcome.nodes],
         "success": end["failure"] is None, "failure": end["failure"],
         "executor": {"status": outcome.status.value, "message": outcome.message,

@@ -29,7 +29,10 @@ def spec_world(spec: str) -> str | None:
 def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = True, start=None):
     """A new, unconnected robot for ``spec`` (use it in a ``with`` block). For the simulator:
     ``world`` (a :class:`~assistant.world.World`) in ``scene``, from its start pose (or
-    ``start``), with odometry noise when ``noise`` (the localizer corrects it)."""
+    ``start``), with odometry noise when ``noise`` (the localizer corrects it). A robot object
+    (not a spec: a replay made by the caller) is returned as it is."""
+    if not isinstance(spec, str):
+        return spec
     parsed = parse_robot_spec(spec)
     if parsed.scheme == "p3dx":  # a real base starts its odometry where the home's plan says it stands
         return make_robot(parsed, start=start or world.start)

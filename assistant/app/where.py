@@ -94,7 +94,7 @@ class Finder:
                  seed: int = 0, on_event=None, stop=None, on_pose=None, searched=None,
                  **search_params) -> Result:
         """Find ``name`` in ``world`` (name or :class:`~assistant.world.World`) and say where it
-        is (module docstring). ``listener``: the asking person's pose ``(x, y, heading)``
+        is (module docstring). ``listener``: the asking person's pose (a :class:`Pose2D` or ``(x, y, heading)``)
         (default: the world's start, where the robot was asked); ``style``: ``static`` or
         ``dynamic`` (default: from ``question``, else static); ``remembered``: a
         :class:`~assistant.perception.objects.Sighting` to describe instead of searching;
@@ -111,7 +111,7 @@ class Finder:
         w = load_world(world) if isinstance(world, str) else world
         scene = w.scene(scene).name
         key = " ".join(str(name).lower().split())
-        pose = Pose2D(*listener) if listener is not None else w.start
+        pose = w.start if listener is None else listener if isinstance(listener, Pose2D) else Pose2D(*listener)
         style = style or (style_for_question(question) if question else "static")
         if remembered is not None or search == "oracle":
             return self._from_world_file(key, w, scene, pose, style, remembered)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import finite_float, seed_int
+from assistant.cli.common import add_robot_option, finite_float, seed_int
 
 PROMPT = "you> "
 
@@ -21,10 +21,10 @@ def register(subparsers) -> None:
         "chat", help="talk to the robot: fetch, where is my X, teach, stop",
         description="A conversation with the robot in a terminal. Ask it to fetch things, where "
                     "something is, how to get to it, or to learn a place; say 'help' inside.")
-    parser.add_argument("--world", default="apartment", help="world name or file (default: apartment)")
+    parser.add_argument("--world", default=None, help="world name or file (default: the one a sim:WORLD robot "
+                                                     "names, else apartment)")
     parser.add_argument("--scene", default="original", help="scene: original or modified")
-    parser.add_argument("--robot", choices=("sim",), default="sim",
-                        help="which robot acts: the simulator (the only one so far)")
+    add_robot_option(parser)
     parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
                         help="sensed: furniture detector on depth frames (default); oracle: the world "
                              "file's furniture")
@@ -62,8 +62,10 @@ def add_speech_arguments(parser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from assistant.app import spec_world
     from assistant.dialogue.repl import ChatSession
 
+    args.world = args.world or spec_world(args.robot) or "apartment"
     if args.audio_in or args.say_to:
         args.speech = True
     if args.asr_model and args.asr != "vosk":

@@ -36,6 +36,16 @@ def emit_json(obj: Any, stream=None) -> None:
     stream.flush()
 
 
+def show_report(args, report, print_report) -> int:
+    """The end of every ``assistant eval NAME``: the report as one JSON line with ``--json``,
+    else ``print_report(report)``'s tables; exit status 0."""
+    if getattr(args, "json", False):
+        emit_json(report)
+    else:
+        print_report(report)
+    return 0
+
+
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
 
@@ -240,6 +250,26 @@ def miss_probability(text: str) -> float:
     if not 0.0 <= value < 1.0:
         raise argparse.ArgumentTypeError(f"a miss rate must be at least 0 and below 1, got {value}")
     return value
+
+
+def robot_spec(text: str) -> str:
+    """Check a robot spec for argparse (``sim``, ``sim:WORLD[:SCENE]``, ``replay:PATH``,
+    ``p3dx:PORT``): an unknown kind is refused with the kinds the factory knows."""
+    from assistant.robot import parse_robot_spec
+
+    try:
+        return str(parse_robot_spec(text))
+    except AssistantError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+
+
+def add_robot_option(parser: argparse.ArgumentParser, default: str = "sim", help_: str | None = None) -> None:
+    """``--robot SPEC``: any spec :func:`~assistant.robot.make_robot` knows, checked when parsed."""
+    from assistant.robot import robot_schemes
+
+    parser.add_argument("--robot", type=robot_spec, default=default, metavar="SPEC",
+                        help=help_ or f"which robot acts: {', '.join(robot_schemes())} — sim (default; "
+                                      "sim:WORLD[:SCENE] names the home), replay:PATH, p3dx:PORT")
 
 
 def add_json_flag(parser: argparse.ArgumentParser) -> None:

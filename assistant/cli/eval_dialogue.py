@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, finite_float, print_table, progress_for
+from assistant.cli.common import finite_float, print_table, progress_for, show_report
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -36,11 +36,7 @@ def run(args: argparse.Namespace) -> int:
                                timeout=args.timeout, only=args.only,
                                on_turn=print_turn if args.verbose else None,
                                progress=progress_for(args))
-    if args.json:
-        emit_json(report)
-    else:
-        print_report(report)
-    return 0
+    return show_report(args, report, print_report)
 
 
 def print_report(summary: dict) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from assistant.cli.common import emit_json, print_table, progress_for
+from assistant.cli.common import print_table, progress_for, show_report
 from assistant.errors import AssistantError
 from assistant.eval.fetch import DEFAULT_DEV_SET, OUTCOMES, REQUIRED
 
@@ -44,11 +44,7 @@ def run(args: argparse.Namespace) -> int:
     finally:
         if sink is not None:
             sink.close()
-    if args.json:
-        emit_json(summary)
-    else:
-        print_report(summary)
-    return 0
+    return show_report(args, summary, print_report)
 
 
 def print_report(summary: dict) -> None:

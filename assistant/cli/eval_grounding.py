@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, percent, print_table, progress_for
+from assistant.cli.common import percent, print_table, progress_for, show_report
 from assistant.eval.grounding import DISSERTATION, FIELD_ROWS, GROUNDER_NAMES
 
 
@@ -23,6 +23,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="evaluate only this grounder (repeatable; default all three)")
     parser.add_argument("--no-plans", dest="plans", action="store_false",
                         help="skip (c): parsing every corpus description from its text")
+    parser.add_argument("--descriptions", metavar="PATH", action="append",
+                        help="(d) annotated descriptions (corpus XML, e.g. the real CSISL file): parse each "
+                             "text and report the share whose plan names the object they name and "
+                             "leaves no spatial word unused (repeatable)")
+    parser.add_argument("--descriptions-world", metavar="NAME", default="apartment",
+                        help="the home the descriptions were given in (default apartment)")
     parser.add_argument("--errors", type=int, default=0, metavar="N",
                         help="also list up to N wrongly grounded test chunks per grounder")
 
@@ -32,12 +38,9 @@ def run(args: argparse.Namespace) -> int:
 
     result = evaluate_grounding(args.corpus, args.test, args.test_world, rounds=args.rounds,
                                 seed=args.seed, grounders=args.grounder, plans=args.plans,
-                                errors=args.errors, progress=progress_for(args))
-    if args.json:
-        emit_json(result)
-    else:
-        print_report(result)
-    return 0
+                                errors=args.errors, descriptions=args.descriptions,
+                                descriptions_world=args.descriptions_world, progress=progress_for(args))
+    return show_report(args, result, print_report)
 
 
 def _pct(value) -> str:
@@ -58,6 +61,18 @@ def print_report(result: dict) -> None:
         print("(b) skipped: no test file (give --test PATH)")
     if result.get("plans"):
         _print_plans(result["plans"], names)
+    for name, cov in (result.get("descriptions") or {}).items():
+        _print_coverage(name, cov)
+
+
+def _print_coverage(name: str, cov: dict) -> None:
+    print(f"\n(d) {', '.join(cov['files'])}: parsed in {cov['world']} with {name}: plan names the object "
+          f"said and leaves no spatial word unused: {cov['covered']} / {cov['descriptions']} = "
+          f"{_pct(cov['share'])} %")
+    print(f"    misses by why: {cov['why']}")
+    print(f"    spatial words left unused most: {cov['unused_words']}")
+    for m in cov["misses"]:
+        print(f"  #{m['number']} '{m['text']}': object (said, plan) {m['object']} unused {m['unused']}")
 
 
 def _print_test(result: dict, names) -> None:

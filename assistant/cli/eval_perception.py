@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, finite_float, print_table, progress_for
+from assistant.cli.common import finite_float, print_table, progress_for, show_report
 from assistant.eval.perception import CATEGORY_ORDER, DEFAULT_CLASSIFIERS
 
 
@@ -24,6 +24,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "product's 4.0, as in the dissertation); an experiment knob")
     parser.add_argument("--no-coverage", action="store_true",
                         help="fuse detections by classifier confidence alone (not × view coverage)")
+    parser.add_argument("--no-variants", action="store_true",
+                        help="the detector without the verifier trained on the training variants "
+                             "(desks, night stands, store beds, benches, dressers): issue 6's")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -33,12 +36,9 @@ def run(args: argparse.Namespace) -> int:
         args.realdata, skip={s.strip() for s in (args.skip or "").split(",") if s.strip()},
         classifiers=[m.strip() for m in args.classifiers.split(",") if m.strip()],
         train_plans=args.train_plans, range_m=args.range_m, coverage=not args.no_coverage,
+        variants=not args.no_variants,
         progress=progress_for(args))
-    if args.json:
-        emit_json(report)
-    else:
-        print_report(report)
-    return 0
+    return show_report(args, report, print_report)
 
 
 def realdata_summary_line(summary: dict) -> str:

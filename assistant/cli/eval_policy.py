@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, print_table, progress_for
+from assistant.cli.common import print_table, progress_for, show_report
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -51,11 +51,7 @@ def run(args: argparse.Namespace) -> int:
                               trials=args.trials, seed=args.seed, drive=args.drive,
                               use_cache=not args.no_cache, model_params=params,
                               progress=progress_for(args))
-    if args.json:
-        emit_json(summary)
-    else:
-        print_report(summary)
-    return 0
+    return show_report(args, summary, print_report)
 
 
 def print_report(summary: dict) -> None:

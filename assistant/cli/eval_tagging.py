@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from assistant.cli.common import emit_json, percent, print_table, progress_for
+from assistant.cli.common import emit_json, percent, print_table, progress_for, show_report
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -42,11 +42,7 @@ def run(args: argparse.Namespace) -> int:
     test_paths = [] if args.no_test else args.test
     report = evaluate_tagging(args.corpus, test_paths, folds=args.folds, top=args.top,
                               progress=progress)
-    if args.json:
-        emit_json(report)
-    else:
-        print_report(report)
-    return 0
+    return show_report(args, report, print_report)
 
 
 def _pct(value: float) -> str:

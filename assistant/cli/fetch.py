@@ -1,12 +1,13 @@
-"""``assistant fetch TEXT --world NAME``: follow a fetch command in the simulator, from text to
-the final pose, and say whether the target object ends up in view."""
+"""``assistant fetch TEXT --world NAME``: follow a fetch command with a robot (the simulator by
+default, or a replay), from text to the final pose, and say whether the target object ends up
+in view. The fetch itself is the application layer's (:meth:`assistant.app.Fetcher.fetch`)."""
 
 from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import (MAX_SEED, add_json_flag, check_command_text, emit_json, request_int, require_text_or_batch,
-                                  run_batch, seed_int)
+from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, check_command_text, emit_json, request_int,
+                                  require_text_or_batch, run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -29,9 +30,9 @@ def register(subparsers) -> None:
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None,
                         help="grounding model (default: the one measured best)")
     parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (odometry and depth noise)")
-    parser.add_argument("--robot", metavar="SPEC", default="sim",
-                        help="sim (default) or replay:FILE.mcap — a recorded session (assistant record): "
-                             "its home is the recording's unless --world says otherwise")
+    add_robot_option(parser, help_="sim (default; sim:WORLD[:SCENE] names the home) or replay:FILE.mcap — a "
+                                   "recorded session (assistant record): its home is the recording's unless "
+                                   "--world says otherwise")
     parser.add_argument("--record", metavar="OUT.mcap",
                         help="record the run (depth, odometry, commands, the command's words) as MCAP; "
                              "replay it with --robot replay:OUT.mcap")
@@ -47,17 +48,17 @@ def register(subparsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from assistant.app import Fetcher
     from assistant.errors import AssistantError
-    from assistant.executor.trial import FetchRunner
 
     require_text_or_batch(args.text, args.batch, "fetch")
-    runner = FetchRunner(grounder=args.grounder, taught=True)
+    fetcher = Fetcher(grounder=args.grounder, taught=True)
     if args.batch:
         def handle(request: dict) -> dict:
-            unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind"}
+            unknown = set(request) - {"text", "world", "scene", "perception", "object", "seed", "kind", "robot"}
             if unknown:
                 raise AssistantError(f"unknown key(s) {', '.join(sorted(unknown))}; a request has "
-                                     "text, world, scene, perception, object, seed")
+                                     "text, world, scene, perception, object, seed, robot")
             if not request.get("text") or not request.get("world"):
                 raise AssistantError("a request needs 'text' and 'world'")
             check_command_text(request["text"])
@@ -66,12 +67,17 @@ def run(args: argparse.Namespace) -> int:
             perception = request.get("perception", args.perception)
             if perception not in PERCEPTION_MODES:
                 raise AssistantError(f"perception must be one of {', '.join(PERCEPTION_MODES)}, got {perception!r}")
-            return runner.run(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
-                              perception, request_int(request, "seed", args.seed, high=MAX_SEED),
-                              request.get("object")).data
+            return fetcher.fetch(str(request["text"]), str(request["world"]), request.get("scene", args.scene),
+                                 perception, robot=str(request.get("robot", args.robot)),
+                                 seed=request_int(request, "seed", args.seed, high=MAX_SEED),
+                                 object_name=request.get("object")).data
 
         return run_batch(args.batch, handle, json_requests=True)
     robot = _robot(args)
+    if not args.world:
+        from assistant.app import spec_world
+
+        args.world = spec_world(args.robot)
     if not args.world:
         from assistant.world import world_names
 
@@ -80,8 +86,8 @@ def run(args: argparse.Namespace) -> int:
     if args.record:
         robot = _recording(robot, args, text)
     view = _Viewer() if args.view else None
-    outcome = runner.run(text, args.world, args.scene, args.perception, args.seed, args.object,
-                         on_event=view.on_event if view else None, robot=robot)
+    outcome = fetcher.fetch(text, args.world, args.scene, args.perception, robot=robot or args.robot,
+                            seed=args.seed, object_name=args.object, on_event=view.on_event if view else None)
     if robot is not None and hasattr(robot, "command_report"):
         outcome.data["replay"] = robot.command_report()
     if args.json:
@@ -94,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _robot(args):
-    """None for the simulator (the runner makes it); a replay for ``replay:FILE``, whose
+    """None for the simulator (the fetcher makes it from the spec); a replay for ``replay:FILE``, whose
     recorded home and scene fill in --world and --scene when not given."""
     from assistant.errors import AssistantError
     from assistant.robot import make_robot, parse_robot_spec

@@ -97,10 +97,10 @@ def look_around(robot, step_deg: float = 30.0, turn_rate_rad_s: float = 0.4) -> 
 
 
 def _fetch(robot, args, world: str, scene: str) -> dict:
-    from assistant.executor.trial import FetchRunner
+    from assistant.app import Fetcher
 
     robot.connect()
     robot.record_turn("user", args.fetch)
-    outcome = FetchRunner().run(args.fetch, world, scene, args.perception, args.seed, robot=robot)
+    outcome = Fetcher().fetch(args.fetch, world, scene, args.perception, robot=robot, seed=args.seed)
     robot.close()
     return outcome.data

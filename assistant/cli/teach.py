@@ -1,5 +1,6 @@
-"""``assistant teach RDT --world NAME``: drive the simulated robot by keys and record a
-demonstration of an RDT node (dissertation 5.5.2); ``--list``, ``--forget NAME`` and
+"""``assistant teach RDT --world NAME``: drive the robot (the simulator by default, ``--robot
+SPEC``) by keys and record a demonstration of an RDT node (dissertation 5.5.2; the application
+layer's :func:`assistant.app.teach`); ``--list``, ``--forget NAME`` and
 ``--accept NAME`` manage what the user taught (kept in the user's data folder, see
 :mod:`assistant.policy.taught`)."""
 
@@ -8,7 +9,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from assistant.cli.common import add_json_flag, emit_json, parse_pose
+from assistant.cli.common import add_json_flag, add_robot_option, emit_json, parse_pose
 
 
 def register(subparsers) -> None:
@@ -35,23 +36,24 @@ def register(subparsers) -> None:
     manage.add_argument("--list", action="store_true", help="list the demonstrations you taught")
     manage.add_argument("--forget", metavar="NAME", help="delete a taught demonstration (RDT/NAME)")
     manage.add_argument("--accept", metavar="NAME", help="use a held-back demonstration (RDT/NAME)")
+    add_robot_option(parser)
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    from assistant.app import teach
     from assistant.errors import AssistantError
-    from assistant.policy.teaching import run_teaching
 
     if args.list or args.forget or args.accept:
         return _manage(args)
     if not args.rdt or not args.world:
         raise AssistantError("give the RDT and --world NAME (e.g. `assistant teach couch-front-table "
                              "--world training-home`), or --list / --forget NAME / --accept NAME")
-    outcome = run_teaching(args.rdt, args.world, args.scene, args.start, args.reference, args.target,
-                           args.out, echo=lambda text: print(text, file=sys.stderr),
-                           accept_outlier=args.accept_outlier)
-    d = outcome.to_dict()
+    result = teach(args.rdt, args.world, args.scene, robot=args.robot, start=args.start, reference=args.reference,
+                   target=args.target, out=args.out, echo=lambda text: print(text, file=sys.stderr),
+                   accept_outlier=args.accept_outlier)
+    outcome, d = result.task, result.to_dict()
     if args.json:
         emit_json(d)
     elif outcome.saved is None:

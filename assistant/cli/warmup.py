@@ -35,8 +35,8 @@ def run(args: argparse.Namespace) -> int:
     steps = (
         ("language and grounding models", lambda: services.parser(world)),
         ("description model", lambda: services.describer),
-        ("policy models", lambda: services.runner().policies.models),
-        ("furniture detector", lambda: services.runner().detector),
+        ("policy models", lambda: services.fetcher().policies.models),
+        ("furniture detector", lambda: services.fetcher().detector),
     )
     done = []
     started = time.monotonic()

@@ -6,15 +6,16 @@ object detector) and the description is composed from the environment model it b
 (``"search": "sensed"``, ``"environment": "perceived"``). ``--search oracle`` keeps the old
 shortcut — the object's position and the furniture read from the world file — and is labelled
 ``"search": "oracle"``, ``"environment": "oracle"``. The description itself is composed by
-content selection and surface realization learned from the corpus.
+content selection and surface realization learned from the corpus. Search, then describe, is
+the application layer's :meth:`assistant.app.Finder.where_is`.
 """
 
 from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import (MAX_SEED, add_json_flag, emit_json, miss_probability, parse_pose, request_int,
-                                  run_batch, seed_int)
+from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, emit_json, miss_probability, parse_pose,
+                                  request_int, run_batch, seed_int)
 
 
 def register(subparsers) -> None:
@@ -42,42 +43,52 @@ def register(subparsers) -> None:
                         help="sensed search: probability that the object detector misses a visible "
                              "object in a frame (default 0)")
     parser.add_argument("--seed", type=seed_int, default=0, help="sensed search: simulator seed")
+    add_robot_option(parser)
     parser.add_argument("--corpus", action="append", metavar="PATH",
                         help="annotated corpus (XML + chunk-grounding CSV, files or folders) to "
                              "learn from instead of the repository's corpus/")
     parser.add_argument("--batch", metavar="FILE",
                         help="one JSON request per line: {object, world, scene, listener, style, "
-                             "question, search}")
+                             "question, search, miss_rate, seed, robot}")
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    from assistant.app import Finder, spec_world
     from assistant.errors import AssistantError
     from assistant.generation import Describer, load_generation_model
 
-    describer = Describer(load_generation_model(args.corpus))
-    shared: dict = {}
+    finder = Finder(Describer(load_generation_model(args.corpus)))
+
+    def answer(name, world, scene="original", listener=None, style=None, question=None, search="sensed",
+               miss_rate=0.0, seed=0, robot="sim"):
+        if not name or not world:
+            raise AssistantError("a request needs 'object' and 'world'")
+        return finder.where_is(str(name), world, scene, robot=robot, search=search, listener=listener,
+                               style=style, question=question, miss_rate=miss_rate, seed=seed).description
+
     if args.batch:
         def handle(request: dict) -> dict:
             listener = request.get("listener")
             if isinstance(listener, str):
                 listener = parse_pose(listener)
-            return answer(describer, request.get("object"), request.get("world"),
-                          request.get("scene", "original"), listener, request.get("style"),
-                          request.get("question"), search=request.get("search", args.search),
+            return answer(request.get("object"), request.get("world"), request.get("scene", "original"),
+                          listener, request.get("style"), request.get("question"),
+                          search=request.get("search", args.search),
                           miss_rate=miss_probability(str(request.get("miss_rate", args.miss_rate))),
-                          seed=request_int(request, "seed", args.seed, high=MAX_SEED), shared=shared).to_dict()
+                          seed=request_int(request, "seed", args.seed, high=MAX_SEED),
+                          robot=str(request.get("robot", args.robot))).to_dict()
         return run_batch(args.batch, handle, json_requests=True)
+    args.world = args.world or spec_world(args.robot)
     if not args.object or not args.world:
         raise AssistantError("give an object and --world NAME (or --batch FILE)")
     if args.search == "sensed" and not args.json:
         import sys
 
         print(f"searching for the {args.object} …", file=sys.stderr, flush=True)
-    result = answer(describer, args.object, args.world, args.scene, args.listener, args.style,
-                    args.question, search=args.search, miss_rate=args.miss_rate, seed=args.seed,
-                    shared=shared)
+    result = answer(args.object, args.world, args.scene, args.listener, args.style, args.question,
+                    search=args.search, miss_rate=args.miss_rate, seed=args.seed, robot=args.robot)
     if args.json:
         emit_json(result.to_dict())
         return 0
@@ -98,54 +109,3 @@ def run(args: argparse.Namespace) -> int:
         if result.ambiguous:
             print("  note: no selection singles the furniture out; the description may be ambiguous")
     return 0
-
-
-def answer(describer, name, world_name, scene="original", listener=None, style=None, question=None,
-           search: str = "sensed", miss_rate: float = 0.0, seed: int = 0, shared: dict | None = None,
-           on_event=None):
-    """One "where is my X?" request: search (``sensed``: the simulated robot from the world's
-    start pose; ``oracle``: the world file), then compose. ``shared`` keeps the loaded furniture
-    detector between requests of a batch."""
-    import time
-
-    from assistant.errors import AssistantError, UnknownNameError
-    from assistant.generation import (not_found_description, oracle_environment, oracle_sighting,
-                                      style_for_question)
-    from assistant.generation.types import SEARCH_MODES
-    from assistant.geometry import Pose2D
-    from assistant.world import load_world
-
-    if not name or not world_name:
-        raise AssistantError("a request needs 'object' and 'world'")
-    if search not in SEARCH_MODES:
-        raise UnknownNameError("search", str(search), SEARCH_MODES)
-    world = load_world(world_name)
-    scene = world.scene(scene).name
-    # the person asking stands where the robot was asked (the world's start pose) unless told
-    # otherwise: rooms are entered, and walls named ("the back wall"), from there
-    pose = Pose2D(*listener) if listener is not None else world.start
-    if style is None:
-        style = style_for_question(question) if question else "static"
-    if search == "sensed":
-        from assistant.executor.search import search_for
-
-        shared = {} if shared is None else shared
-        if "furniture_detector" not in shared:
-            from assistant.perception import FurnitureDetector
-
-            shared["furniture_detector"] = FurnitureDetector()
-        found = search_for(" ".join(str(name).lower().split()), world, scene,
-                           furniture_detector=shared["furniture_detector"], miss_rate=miss_rate,
-                           seed=seed, on_event=on_event)
-        return describer.describe_search(found, world.floorplan, listener_pose=pose, style=style)
-    start = time.perf_counter()
-    sighting = oracle_sighting(world, scene, str(name))
-    search_s = time.perf_counter() - start
-    if sighting is None:
-        result = not_found_description(str(name), world.floorplan.room_names)
-        result.search_seconds = search_s
-        return result
-    env = oracle_environment(world, scene)
-    result = describer.describe(sighting, env, world.floorplan, listener_pose=pose, style=style)
-    result.search_seconds = search_s
-    return result

@@ -6,17 +6,18 @@ object the robot has seen.
 * :class:`DialogueManager` — ``handle(text) -> Turn``; a fetch runs in a worker thread.
 * :class:`Turn` — reply text, action, outcome, data (any front end can render it).
 * :class:`ObjectMemory`, :class:`MemoryEntry` — the persisted object memory.
-* :class:`Services` — the lazily built parser, describer and fetch runner.
+* :class:`Services` — the lazily built parser, describer and the application layer's use cases
+  (a fetch or a search ends in an :class:`assistant.app.Result`).
 * :func:`classify` — the deterministic intent rules.
 """
 
 from __future__ import annotations
 
 from assistant.dialogue.intents import Intent, classify, normalise
-from assistant.dialogue.manager import HELP_TEXT, DialogueManager, Turn
-from assistant.dialogue.memory import ObjectMemory, MemoryEntry, age_phrase, default_data_dir
-from assistant.dialogue.services import FetchReport, Interrupted, Services, fetch_report
+from assistant.dialogue.manager import DialogueManager
+from assistant.dialogue.memory import MemoryEntry, ObjectMemory, age_phrase, default_data_dir
+from assistant.dialogue.services import Services
+from assistant.dialogue.turns import HELP_TEXT, Turn
 
-__all__ = ["HELP_TEXT", "DialogueManager", "FetchReport", "Intent", "Interrupted", "ObjectMemory",
-           "Services", "MemoryEntry", "Turn", "age_phrase", "classify", "default_data_dir", "fetch_report",
-           "normalise"]
+__all__ = ["HELP_TEXT", "DialogueManager", "Intent", "MemoryEntry", "ObjectMemory", "Services", "Turn",
+           "age_phrase", "classify", "default_data_dir", "normalise"]

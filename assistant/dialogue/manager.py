@@ -10,7 +10,7 @@ goes to the grounding parser, and a plan with nodes, a room or an object is a fe
 A fetch runs in a worker thread (the simulator takes seconds); :meth:`DialogueManager.handle`
 returns at once with "Going to the bedroom." and the worker reports progress through the
 ``say`` callback and ends with a final :class:`Turn` (:meth:`DialogueManager.wait`). "stop"
-sets a flag that the fetch's progress callback turns into :class:`Interrupted`.
+sets a flag that stops the robot at its next call (:class:`~assistant.dialogue.worker.TaskWorker`).
 
 When the plan is ambiguous (several tables in the room, no reference to pick one) or
 incomplete (no room), the manager asks instead of guessing and understands the answer in
@@ -20,52 +20,21 @@ context ("the one with the chairs", "the second", "never mind"). Unknown words a
 from __future__ import annotations
 
 import re
-import threading
 import time
-from dataclasses import dataclass, field
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
-                                        furniture_mentions, model_choice,
-                                        progress_sentence, unused_mentions)
+                                        furniture_mentions, model_choice, unused_mentions)
 from assistant.dialogue.intents import classify, teach_phrase
 from assistant.dialogue.memory import ObjectMemory
-from assistant.dialogue.services import (Interrupted, Services, furniture_phrase, known_object_names,
-                                         world_environment)
-
-NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
-HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
-             "in the living room\"), ask where something is (\"where is my mug?\", \"have you seen my "
-             "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
-             "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
-             "\"repeat that\", \"which home am I in\" or \"start over\".")
-
-
-@dataclass
-class Turn:
-    """One exchange: what was said, the intent, the robot's reply, what it did and how it ended.
-
-    ``action``: ``answer``, ``describe``, ``fetch``, ``search``, ``clarify``, ``teach``, ``stop``, ``none``;
-    ``outcome``: ``answered``, ``asked``, ``started``, ``success``, ``failed``, ``stopped``,
-    ``cancelled``, ``not_understood``, ``busy``; ``seconds``: time to the reply (wall clock).
-    """
-
-    text: str
-    intent: str
-    reply: str
-    action: str = "none"
-    outcome: str = "answered"
-    data: dict = field(default_factory=dict)
-    seconds: float = 0.0
-    final: bool = True  # False for a started fetch: a final Turn follows from the worker
-
-    def to_dict(self) -> dict:
-        return {"text": self.text, "intent": self.intent, "reply": self.reply, "action": self.action,
-                "outcome": self.outcome, "data": self.data, "seconds": round(self.seconds, 4)}
-
-
-def _join(words: list[str], last: str = "and") -> str:
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {last} " + words[-1]
-
+from assistant.app import known_object_names
+from assistant.dialogue.services import Services, furniture_phrase
+from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, Turn
+from assistant.dialogue.turns import join_words as _join
+from assistant.dialogue.replies import it_them
+from assistant.dialogue.worker import TaskWorker
+from assistant.grounding.objects import is_object_word, object_phrase
+from assistant.grounding.rooms import unknown_room_named
+from assistant.grounding.vocabulary import FURNITURE_WORDS, STRUCTURE_REFERENCES
 
 class DialogueManager:
     """Conversation state for one person and one home.
@@ -92,7 +61,7 @@ class DialogueManager:
         self.synonyms: dict[str, str] = {}
         self.last_said = ""
         self.history: list[Turn] = []
-        self._job: _Job | None = None
+        self.worker = TaskWorker(self)
 
     # ------------------------------------------------------------------ helpers
     @property
@@ -101,9 +70,8 @@ class DialogueManager:
 
     @property
     def busy(self) -> bool:
-        """A fetch is running and has not been asked to stop."""
-        job = self._job
-        return job is not None and job.thread.is_alive() and not job.stop.is_set()
+        """A fetch or search is running and has not been asked to stop."""
+        return self.worker.busy
 
     def greeting(self) -> str:
         return (f"Hello! I'm in the {self.world.name} ({_join(['the ' + r for r in self.rooms])}). "
@@ -192,31 +160,22 @@ class DialogueManager:
         return self._turn(text, intent_name, "OK — I'm not doing anything right now.", "none", "answered", start)
 
     def stop(self) -> bool:
-        """Ask a running fetch to stop (Ctrl-C); True when one was running."""
-        if self.busy:
-            self._job.stop.set()
-            return True
-        return False
+        """Ask a running task to stop (Ctrl-C); True when one was running."""
+        return self.worker.stop()
 
     @property
     def fetch_started(self) -> bool:
-        """A fetch was started in this conversation (so :meth:`wait` has one to wait for)."""
-        return self._job is not None
+        """A task was started in this conversation (so :meth:`wait` has one to wait for)."""
+        return self.worker.job is not None
 
     def wait(self, timeout: float | None = None) -> Turn | None:
-        """Wait for the last fetch to end; its final :class:`Turn` (None if none ran, or it is
-        still running after ``timeout`` seconds). A stopped fetch ends at the robot's next call."""
-        job = self._job
-        if job is None:
-            return None
-        job.thread.join(timeout)
-        return None if job.thread.is_alive() else job.final
+        """Wait for the last task to end; its final :class:`Turn` (None if none ran, or it is
+        still running after ``timeout`` seconds). A stopped task ends at the robot's next call."""
+        return self.worker.wait(timeout)
 
     def close(self, timeout: float = 10.0) -> None:
-        """Stop a running fetch and wait for it (end of a conversation)."""
-        if self._job is not None:
-            self._job.stop.set()
-            self._job.thread.join(timeout)
+        """Stop a running task and wait for it (end of a conversation)."""
+        self.worker.close(timeout)
 
     # ------------------------------------------------------------------ where / how
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
@@ -228,10 +187,13 @@ class DialogueManager:
                 return k, None
         if plan_object:
             return plan_object, None
-        m = re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+(?: [a-z]+)?)$", norm) or \
-            re.search(r"\b(?:my|the|your|our|a|an) ([a-z]+)\b", norm)
+        m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
+            re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
         if m:
-            noun = re.sub(r"\b(is|are|now|please|again|then|gone)\b", "", m.group(1)).strip()
+            noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on)\b", "", m.group(1)).strip()
+            found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
+            if found is not None:  # any thing can be asked about (issue 16)
+                return found.kind, None
             return None, noun or None
         return None, None
 
@@ -265,8 +227,11 @@ class DialogueManager:
         if self.services.search_mode == "sensed":
             return self._search(text, intent.name, obj, style, start)
         result = self._describe(obj, style)
-        if not result.found:
-            return self._turn(text, intent.name, result.description, "describe", "answered", start,
+        if not result.found:  # nothing of the kind on the map: say so, and offer to look
+            self.pending = {"kind": "confirm", "search": obj, "object": obj}
+            where = "they are" if it_them(obj) == "them" else "it is"
+            reply = f"I haven't seen your {obj}, and I don't know where {where}. Shall I look for {it_them(obj)}?"
+            return self._turn(text, intent.name, reply, "answer", "answered", start,
                               object=obj, source="simulator", found=False)
         description = result.description
         place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", description.rstrip("."), flags=re.I)
@@ -286,29 +251,22 @@ class DialogueManager:
         if self.busy:
             return self._turn(said, intent_name, "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
-        reply = lead or f"I haven't seen your {obj} yet — I'll go and look for it."
+        reply = lead or f"I haven't seen your {obj} yet — I'll go and look for {it_them(obj)}."
         return self._start_job("search", said, reply, obj, None, obj, start, intent_name=intent_name,
                                style=style, source="search", object=obj)
 
     def _describe(self, obj: str, style: str, seen=None):
         """The generation layer's answer, the way ``assistant where --search oracle`` composes it
         (the furniture from the simulator's world file; the object's position from there too, or
-        from the memory's sighting ``seen``)."""
-        from assistant.generation import not_found_description, oracle_sighting
-        from assistant.perception.objects import Sighting
-
+        from the memory's entry ``seen``): a :class:`~assistant.generation.types.GeneratedDescription`."""
+        remembered = None
         if seen is not None:
             from assistant.geometry import Pose2D
+            from assistant.perception.objects import Sighting
 
-            sighting = Sighting(obj, seen.x_m, seen.y_m, 0.7, room=seen.room, seen_from=Pose2D(seen.x_m, seen.y_m, 0.0))
-        else:
-            sighting = oracle_sighting(self.world, self.scene, obj)
-        if sighting is None:
-            return not_found_description(obj, self.rooms)
-        listener = self.world.start  # the person talks to the robot where it started
-        return self.services.describer.describe(sighting, world_environment(self.world, self.scene),
-                                                self.world.floorplan,
-                                                listener_pose=listener, style=style)
+            remembered = Sighting(obj, seen.x_m, seen.y_m, 0.7, room=seen.room,
+                                  seen_from=Pose2D(seen.x_m, seen.y_m, 0.0))
+        return self.services.describe(obj, self.world, self.scene, style, remembered).description
 
     # ------------------------------------------------------------------ teaching
     def _teach(self, text: str, start: float) -> Turn:
@@ -353,6 +311,9 @@ class DialogueManager:
         unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in _POLITE]
         tags = dict(zip(parsed.analysis.tokens, parsed.analysis.pos))
         nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))]
+        # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
+        nouns += [r for n in plan.nodes for r, _ in n.pairs if r not in FURNITURE_WORDS.values()
+                  and r not in STRUCTURE_REFERENCES and not is_object_word(r) and r not in nouns]
         if plan.room is None:  # the parser missed a room the words name ("go to the bedroom")
             named = [r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text.lower())]
             if len(named) == 1:
@@ -364,6 +325,12 @@ class DialogueManager:
         # the object named in the words when the plan lost it ("get the mug from the table")
         obj = plan.object or (self._object_in(" ".join(str(t).lower() for t in parsed.analysis.tokens))[0]
                               if plan.nodes or plan.room or mentions else None)
+        missing = unknown_room_named([str(t).lower() for t in parsed.analysis.tokens], self.world) \
+            if plan.room is None else None
+        if missing is not None:  # "go to the kitchen" in a home with none
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(said, "command", f"There is no {missing} here; the rooms are {rooms}.", "answer",
+                              "not_understood", start, unknown_room=missing)
         has_plan = bool(plan.nodes or plan.room or plan.object or (mentions and obj))
         if not has_plan:
             if unused:
@@ -456,6 +423,9 @@ class DialogueManager:
     def _resolve(self, text: str, intent, start: float) -> Turn | None:
         p = self.pending
         norm = intent.text
+        if intent.name in NEW_REQUESTS:  # a new request replaces the question (issue 16)
+            self.pending = None
+            return None
         if p["kind"] == "confirm":
             self.pending = None
             if intent.name == "yes" and p.get("search"):
@@ -481,6 +451,7 @@ class DialogueManager:
                 self.pending = None
                 return self._turn(text, "no", f"OK — then I can't use '{word}'. Could you say it another way?",
                                   "none", "not_understood", start)
+            self.pending = None  # anything else is a new request
             return None
         if p["kind"] == "room":
             room = next((r for r in self.rooms if r in norm), None)
@@ -490,10 +461,14 @@ class DialogueManager:
             if room is not None:
                 self.pending = None
                 return self._command(f"{p['text']} in the {room}", start, original=text)
-            if intent.name in ("command",) and len(norm.split()) > 4:
-                self.pending = None
-                return None  # a new command
             rooms = _join(["the " + r for r in self.rooms], "or")
+            missing = unknown_room_named(norm.split(), self.world)
+            if missing is not None:
+                return self._turn(text, "answer", f"There is no {missing} here; the rooms are {rooms}. "
+                                  "Which one should I look in?", "clarify", "asked", start, unknown_room=missing)
+            if intent.name == "command" and self._is_request(text):
+                self.pending = None
+                return None  # a new command replaces the question
             return self._turn(text, "answer", f"Sorry, which room — {rooms}?", "clarify", "asked", start)
         if p["kind"] == "which":
             index = self._choose(norm, text, p)
@@ -504,12 +479,18 @@ class DialogueManager:
                 turn = self._command(command, start, force=True, original=text)
                 turn.data["chosen"] = option["id"]
                 return turn
-            if intent.name == "command" and len(norm.split()) > 5:
+            if intent.name == "command" and (len(norm.split()) > 5 or self._is_request(text)):
                 self.pending = None
                 return None
             return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]
                               + " (You can also say \"the first\" or \"never mind\".)", "clarify", "asked", start)
         return None
+
+    def _is_request(self, text: str) -> bool:
+        """Whether an answer to a question is rather a new request: it names an object, a place
+        or a move of its own ("bring me the mug", "go to the kitchen")."""
+        plan = self.services.parser(self.world).parse(text).plan
+        return bool(plan.object or plan.nodes or unknown_room_named(text.lower().split(), self.world))
 
     def _choose(self, norm: str, text: str, p: dict) -> int | None:
         return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)
@@ -523,232 +504,17 @@ class DialogueManager:
     def _start_job(self, kind: str, said: str, reply: str, text: str, task_room, task_object, start,
                    intent_name="command", style: str = "static", **data) -> Turn:
         """Reply at once and run a fetch (``text``: the command) or a search (``text``: the
-        object) in a worker thread; its final :class:`Turn` comes through ``say``/``on_finish``."""
+        object) in the worker; its final :class:`Turn` comes through ``say``/``on_finish``."""
         turn = self._turn(said, intent_name, reply, kind, "started", start, **data)
         turn.final = False
-        previous = self._job
-        job = _Job(threading.Event(), kind=kind)
-        job.thread = threading.Thread(target=self._run_job,
-                                      args=(job, previous, text, task_room, task_object, style),
-                                      name=f"assistant-{kind}", daemon=True)
-        self._job = job
-        job.thread.start()
+        self.worker.start(kind, text, task_room, task_object, style)
         return turn
 
-    def _speak(self, sentence: str) -> None:
-        self.last_said = sentence
-        try:
-            self.say(sentence)
-        except Exception:  # a front end's problem must not kill the fetch
-            pass
-
-    def _run_job(self, job: "_Job", previous: "_Job | None", text: str, room: str | None,
-                 obj: str | None, style: str = "static") -> None:
-        from assistant.dialogue.seen import SeenRecorder
-
-        start = time.perf_counter()
-        if previous is not None:  # a stopped task winds down at its robot's next call
-            previous.thread.join(30.0)
-        words = {f.id: f.word for f in self.world.scene(self.scene).furniture}
-        recorder = SeenRecorder(self.memory, self.world.name, source=job.kind)
-        before = self.memory.recall(self.world.name, obj) if obj else None
-        announced: set[str] = set()
-
-        def on_event(name: str, data: dict) -> None:
-            if job.stop.is_set():
-                raise Interrupted()
-            if self.on_event is not None:
-                try:
-                    self.on_event(name, data)
-                except Exception:
-                    pass
-            if name == "objects_seen":
-                recorder.on_event(name, data)
-                if job.kind == "search" and obj and obj in recorder.latest and obj not in announced:
-                    announced.add(obj)
-                    self._speak(f"I can see your {obj}!")
-            sentence = progress_sentence(name, data, words)
-            if sentence:
-                self._speak(sentence)
-            if job.stop.is_set():
-                raise Interrupted()
-
-        def stopped(furniture=None) -> Turn:
-            summary = self._remember_seen(recorder, furniture)
-            return Turn(text, "command", "I've stopped.", job.kind, "stopped",
-                        {"command": text, "seen": summary["seen"]}, time.perf_counter() - start)
-
-        try:
-            if job.kind == "search":
-                outcome = self.services.search(text, self.world.name, self.scene, on_event, stop=job.stop,
-                                               on_pose=self.on_pose)
-            else:
-                outcome = self.services.fetch(text, self.world.name, self.scene, on_event, stop=job.stop,
-                                              on_pose=self.on_pose)
-        except Interrupted as error:
-            final = stopped(getattr(error, "furniture", None))
-        except Exception as error:
-            self._remember_seen(recorder, None)
-            final = Turn(text, "command", f"Sorry, I couldn't do that ({error}).", job.kind, "failed",
-                         {"command": text}, time.perf_counter() - start)
-        else:
-            try:
-                if job.stop.is_set():
-                    final = stopped(getattr(outcome, "furniture", None))
-                elif job.kind == "search":
-                    final = self._finish_search(text, outcome, recorder, style, start)
-                else:
-                    recorder.add(list(getattr(outcome, "seen", None) or []))  # the final view's sightings too
-                    summary = self._remember_seen(recorder, getattr(outcome, "furniture", None))
-                    final = self._finish(text, outcome, obj, start, summary, before)
-            except Exception as error:  # a bug here must still end the task with a reply
-                final = Turn(text, "error", f"Sorry, something went wrong inside me after the {job.kind} "
-                             f"({type(error).__name__}: {error}).", job.kind, "failed", {"command": text},
-                             time.perf_counter() - start)
-        job.final = final
-        self.history.append(final)
-        self._speak(final.reply)
-        if self.on_finish is not None:
-            try:
-                self.on_finish(final)
-            except Exception:
-                pass
-
-    def _remember_seen(self, recorder, furniture) -> dict:
-        """Write what the task saw to memory (phrases composed from the perceived furniture)."""
-        try:
-            return recorder.finish(furniture, self.services.describer, self.world.floorplan)
-        except Exception as error:  # memory must not turn a finished task into a crash
-            return {"seen": sorted(recorder.latest), "moved": [], "places": {}, "problem": str(error)}
-
-    def _finish_search(self, name: str, result, recorder, style: str, start: float) -> Turn:
-        """The search's answer: where the object is (composed from what the robot perceived), or
-        the honest "I looked in … and did not find …"."""
-        if result.found and result.sighting is not None:
-            recorder.add([result.sighting])
-        summary = self._remember_seen(recorder, getattr(result, "furniture", None))
-        data = {"object": name, "found": bool(result.found), "status": str(getattr(result.status, "value", result.status)),
-                "rooms_searched": list(result.rooms_searched), "seen": summary["seen"], "source": "search",
-                "search_seconds": round(float(getattr(result, "wall_seconds", 0.0) or 0.0), 2)}
-        listener = self.world.start  # the person talks to the robot where it started
-        try:
-            answer = self.services.describer.describe_search(result, self.world.floorplan, listener_pose=listener,
-                                                             style=style)
-            description = answer.description
-        except Exception as error:  # the sighting is in memory anyway
-            room = getattr(result.sighting, "room", None)
-            description = (f"The {name} is in the {room}." if result.found and room else
-                           f"I couldn't describe where the {name} is ({error}).")
-        if result.found:
-            reply = f"Found it: {description[0].lower() + description[1:]}"
-            return Turn(name, "where", reply, "search", "success", data, time.perf_counter() - start)
-        if result.status == "timeout":
-            rooms = _join(["the " + r for r in result.rooms_searched]) if result.rooms_searched else "nowhere"
-            reply = f"I searched {rooms} but ran out of time before I found your {name}."
-        else:
-            reply = description
-        if self.memory.recall(self.world.name, name) is not None and name not in summary["seen"]:
-            self.memory.forget(self.world.name, name)
-        return Turn(name, "where", reply, "search", "failed", data, time.perf_counter() - start)
-
-    def _finish(self, text, report, obj, start, summary: dict | None = None, before=None) -> Turn:
-        obj = obj or report.object
-        summary = summary or {"seen": [], "moved": [], "places": {}}
-        furniture = report.target_furniture or {}
-        item = next((f for f in self.world.scene(self.scene).furniture if f.id == furniture.get("id")), None)
-        data = {"command": text, "failure": report.failure, "final_pose": report.final_pose,
-                "target_furniture": furniture or None, "executor_message": report.message,
-                "seen": summary["seen"]}
-        if report.failure and report.failure != "not_visible":
-            reply = f"Sorry, I couldn't do it: {report.message or report.failure}."
-            return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
-        if item is not None:
-            phrase = furniture_phrase(self.services.describer, self.world, self.scene, item)
-            where = f"{phrase} in the {item.room}"
-        elif furniture.get("centre") is not None and furniture.get("name"):
-            # sensed perception: the detector's own furniture instance, not a world-file item
-            centre = furniture["centre"]
-            found = self.world.floorplan.room_at(float(centre[0]), float(centre[1]))
-            room = getattr(found, "name", found)
-            item = _Seen(str(furniture.get("id")), str(furniture["name"]), room)
-            phrase = f"on the {item.word}"
-            where = f"{phrase} in the {room}" if room else phrase
-        else:
-            phrase, where = None, "here"
-        place = summary["places"].get(obj) if obj else None
-        if obj and report.object_seen:
-            if place is not None:  # described from the robot's own view of the furniture
-                where = _place_text(place) or where
-            else:  # the detector did not report it on the way (a stand-in, or a miss): the target place
-                self.memory.remember(self.world.name, obj, item.room if item else None, item.id if item else None,
-                                     item.word if item else None, phrase, source="fetch")
-            moved = obj in summary["moved"] or (
-                before is not None and place is None and before.furniture != (item.id if item else None))
-            reply = f"Here it is: I can see your {obj} {where}." + (
-                " It wasn't where I saw it last; I've updated my memory." if moved else "")
-            data["remembered"] = True
-            return Turn(text, "command", reply, "fetch", "success", data, time.perf_counter() - start)
-        if obj:
-            here = f"I'm at the {item.word if item else 'place you described'}, but I can't see your {obj} there."
-            if place is not None:  # seen somewhere else on the way
-                reply = f"{here} I did see it {_place_text(place)} on my way — I've noted that."
-                data["seen_elsewhere"] = place
-                return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start)
-            if before is not None and _near(before, item, furniture):
-                self.memory.forget(self.world.name, obj)
-                data["forgot"] = True
-                here += " It isn't where I saw it last, so I've forgotten that place."
-            if self.services.search_mode == "sensed":
-                self.pending = {"kind": "confirm", "search": obj, "object": obj}
-                here += " Shall I look for it?"
-            return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start)
-        if item is not None:
-            where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
-        return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
-                    time.perf_counter() - start)
-
-
-def _place_text(place: dict) -> str | None:
-    """"on the table by the chair in the bedroom" from a memory entry's dict."""
-    phrase = place.get("phrase") or (f"on the {place['furniture_word']}" if place.get("furniture_word") else None)
-    room = place.get("room")
-    if phrase and room:
-        return f"{phrase} in the {room}"
-    return phrase or (f"in the {room}" if room else None)
-
-
-def _near(before, item, furniture: dict, distance_m: float = 1.0) -> bool:
-    """Whether a remembered sighting lies on (or by) the furniture the fetch went to."""
-    if item is not None and before.furniture == item.id:
-        return True
-    centre = furniture.get("centre") if furniture else None
-    if centre is None and item is not None and hasattr(item, "x"):
-        centre = (item.x, item.y)
-    if centre is None or before.x_m is None:
-        return False
-    return ((before.x_m - float(centre[0])) ** 2 + (before.y_m - float(centre[1])) ** 2) ** 0.5 <= distance_m
-
-
-@dataclass
-class _Seen:
-    """Furniture the detector reported (id, word, room) when it is not a world-file item."""
-
-    id: str
-    word: str
-    room: str | None
-
-
-@dataclass
-class _Job:
-    """One task (``fetch`` or ``search``) in its worker thread."""
-
-    stop: threading.Event
-    thread: threading.Thread | None = None
-    final: Turn | None = None
-    kind: str = "fetch"
-
+#: intents that are always a new request, whatever question is pending
+NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home"})
 
 _POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
            "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
 
 _VAGUE = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}
+

@@ -9,7 +9,8 @@ import sys
 import threading
 from pathlib import Path
 
-from assistant.dialogue.manager import DialogueManager, Turn
+from assistant.dialogue.manager import DialogueManager
+from assistant.dialogue.turns import Turn
 from assistant.dialogue.memory import ObjectMemory, default_data_dir
 from assistant.dialogue.services import Services
 from assistant.errors import AssistantError
@@ -35,7 +36,7 @@ class ChatSession:
         self.transcript_path = Path(args.transcripts or data / "transcripts") / f"{stamp}.json"
         self.history_path = data / "chat_history"
         self.services = Services(perception=args.perception, seed=args.seed,
-                                 search=getattr(args, "search", "sensed"))
+                                 search=getattr(args, "search", "sensed"), robot=getattr(args, "robot", "sim"))
         self.view = None
         self._print_lock = threading.RLock()
         self._interrupts = 0

@@ -8,7 +8,7 @@ Conversations live in ``corpus/dialogues/*.yaml`` (or ``--corpus PATH``, files o
         scene: original             # default original
         search: oracle              # optional: how an unseen object is found (default --search)
         memory:                     # sightings the robot starts with (optional; at the furniture's centre)
-          - {object: mug, furniture: hexagontable_1, minutes_ago: 3}
+          - {object: mug, furniture: hexagontable_1, minutes_ago: 3}   # earlier_session: true → "earlier today"
         turns:
           - say: where is my mug
             expect: {intent: where, action: answer, reply_has: ["3 minutes ago", "bedroom"]}
@@ -140,10 +140,13 @@ def run_conversation(conv: dict, services, timeout: float = 180.0,
         items = {f.id: f for f in world.scene(scene).furniture}
         for m in conv.get("memory") or []:
             item = items[m["furniture"]]
+            seen_s = now - 60.0 * float(m.get("minutes_ago", 1))
             memory.remember(world.name, m["object"], item.room, item.id, item.word,
                             furniture_phrase(services.describer, world, scene, item),
-                            time_s=now - 60.0 * float(m.get("minutes_ago", 1)), source="seeded",
-                            x_m=item.x, y_m=item.y)
+                            time_s=seen_s, source="seeded", x_m=item.x, y_m=item.y)
+            if not m.get("earlier_session", False):
+                # seen in this conversation's session: the session began before the sighting
+                memory.session_start_s = min(memory.session_start_s, seen_s - 1.0)
         manager = DialogueManager(world, scene, services, memory)
         mode = services.search_mode
         services.search_mode = conv.get("search", mode)

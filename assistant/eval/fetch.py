@@ -3,7 +3,7 @@ Table 5-4).
 
 Every command of ``corpus/fetch_dev.jsonl`` ({text, world, scene, object, kind}) is run in the
 simulator from the world's start pose with sensed and/or oracle perception
-(:class:`~assistant.executor.trial.FetchRunner`); a trial succeeds when the target object
+(:meth:`assistant.app.Fetcher.fetch`, the product's own fetch); a trial succeeds when the target object
 covers at least 50 pixels of the final depth frame at a median distance of at most 4.5 m. The
 report gives the success rate and the failure counts per home and scene (Table 5-4's rows:
 not visible, parse, perception = reference not found, collision, ambiguous, no path, no room,
@@ -89,17 +89,18 @@ def evaluate_fetch(dev_set=None, *, perception: str = "both", world: str | None 
     per fetch, the number of commands and the success threshold."""
     import statistics
 
-    from assistant.executor.trial import MAX_DISTANCE_M, MIN_PIXELS, FetchRunner
+    from assistant.app import Fetcher
+    from assistant.executor.trial import MAX_DISTANCE_M, MIN_PIXELS
 
     records = select(load_dev_set(dev_set), world, scene, limit)
     modes = ("sensed", "oracle") if perception == "both" else (perception,)
-    runner = FetchRunner(grounder=grounder)
+    fetcher = Fetcher(grounder=grounder)
     trials = []
     for mode in modes:
         for number, record in enumerate(records):
             progress(f"{mode} fetch trials", number, len(records))
-            outcome = runner.run(record["text"], record["world"], record["scene"], mode, seed,
-                                 record["object"])
+            outcome = fetcher.fetch(record["text"], record["world"], record["scene"], mode, seed=seed,
+                                    object_name=record["object"])
             data = {**outcome.data, "kind": record["kind"]}
             trials.append(data)
             if on_trial is not None:

@@ -18,7 +18,7 @@ detector), and the description is composed from the environment model that searc
     ``unique``: the stated room and relations hold for no other furniture with the support's
     word. ``recovered``: the parse found every relation the generator meant to say.
 (b) **listener** — each description is handed to the simulated robot as a fetch command
-    (``assistant fetch``'s runner, from the world's start pose, with sensed perception by
+    (the application layer's :meth:`~assistant.app.Fetcher.fetch`, ``assistant fetch``'s, from the world's start pose, with sensed perception by
     default, ``--listener-perception oracle`` to separate language from perception errors) and
     counts when the object ends up in the final camera view. ``--no-listener`` skips it.
 (c) **brevity and fluency** — word count, repeated phrases, and agreement with the corpus's
@@ -148,8 +148,10 @@ def _bleu2(words: list[str], references: list[list[str]]) -> float | None:
 @dataclass
 class _Tools:
     """What every case of one evaluation uses: the describer, the parser (``None``: check the
-    generator's own nodes), the corpus's human descriptions, the listener's fetch runner and
-    the furniture detector of the searches (``None`` when not needed)."""
+    generator's own nodes), the corpus's human descriptions, the listener's fetcher (the
+    application layer's fetch use case, ``None`` without the listener), the "where is" use case
+    (search, then describe) and the furniture detector of the searches (``None`` when not
+    needed)."""
 
     describer: object
     parser: object
@@ -158,6 +160,7 @@ class _Tools:
     runner: object
     listener_note: str
     furniture_detector: object
+    finder: object = None
 
 
 def _tools(corpus_paths, parse: bool, listener: bool, search: str, policies: bool) -> _Tools:
@@ -180,14 +183,13 @@ def _tools(corpus_paths, parse: bool, listener: bool, search: str, policies: boo
         from assistant.perception import FurnitureDetector
 
         furniture_detector = FurnitureDetector()
+    from assistant.app import Fetcher, Finder
+
     if listener:
-        try:
-            from assistant.executor.trial import FetchRunner
-            runner = FetchRunner(parser=parser, detector=furniture_detector) if parser is not None \
-                else FetchRunner(detector=furniture_detector)
-        except ImportError as error:
-            listener_note = f"not measured: assistant fetch is not available ({error})"
-    return _Tools(describer, parser, parser_note, humans, runner, listener_note, furniture_detector)
+        runner = Fetcher(parser=parser, detector=furniture_detector) if parser is not None \
+            else Fetcher(detector=furniture_detector)
+    return _Tools(describer, parser, parser_note, humans, runner, listener_note, furniture_detector,
+                  Finder(describer, furniture_detector))
 
 
 def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
@@ -210,10 +212,7 @@ def evaluate(worlds=STUDY_WORLDS, corpus_paths=None, parse: bool = True,
         if search == "sensed":
             found = (searches or {}).get((case.world_name, case.scene, case.obj.name))
             if found is None:
-                from assistant.executor.search import search_for
-
-                found = search_for(case.obj.name, case.world, case.scene,
-                                   furniture_detector=tools.furniture_detector, miss_rate=miss_rate)
+                found = tools.finder.search(case.obj.name, case.world, case.scene, miss_rate=miss_rate)
             done[(case.world_name, case.scene, case.obj.name)] = found
         row = score_case(case, found, tools, listener_perception)
         rows.append(row)
@@ -310,8 +309,8 @@ def _listen(runner, result, case, listener_perception: str) -> dict | None:
     if not result.found:
         return {"success": False, "failure": "not found by the search"}
     try:
-        outcome = runner.run(result.description, case.world_name, case.scene, listener_perception,
-                             object_name=case.obj.name)
+        outcome = runner.fetch(result.description, case.world_name, case.scene, listener_perception,
+                               object_name=case.obj.name)
         return {"success": outcome.success, "failure": outcome.data.get("failure"),
                 "message": outcome.data["executor"]["message"],
                 "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),
@@ -337,11 +336,9 @@ def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") 
     listener_pose = case.world.start
     heading = entry_heading(floorplan, room.name, listener_pose)
     t0 = time.perf_counter()
-    if found is not None:
-        result = tools.describer.describe_search(found, floorplan, listener_pose=listener_pose)
-    else:
-        result = tools.describer.describe(case.sighting, case.environment, floorplan,
-                                          listener_pose=listener_pose)
+    # where is it: described from the finished search, or (oracle) from the world file
+    result = tools.finder.where_is(case.obj.name, case.world, case.scene, listener=listener_pose,
+                                   search="sensed" if found is not None else "oracle", searched=found).description
     compose_ms = (time.perf_counter() - t0) * 1000
     text = result.description
     meant = {n.rdt for n in result.selected if n.kind == "relation"}

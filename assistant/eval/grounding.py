@@ -97,11 +97,14 @@ def plan_agreement(parser, descriptions, commands, limit: int = 10) -> dict:
 
 def evaluate_grounding(corpus=None, test=None, test_world: str | None = None, *, rounds: int = 10,
                        seed: int = 0, grounders=None, plans: bool = True, errors: int = 0,
+                       descriptions=None, descriptions_world: str = CSISL_WORLD,
                        progress: Progress = no_progress) -> dict:
     """Experiments (a) bootstrap on the corpus, (b) the held-out ``test`` label file (default: the
     CSISL templates when present, given in ``test_world``) and (c) every corpus description parsed
     from its text, for each of ``grounders`` (default all three). ``errors``: list up to that many
-    wrongly grounded test chunks per grounder. Returns the JSON report."""
+    wrongly grounded test chunks per grounder. ``descriptions``: annotated description files for
+    (d), each parsed in ``descriptions_world`` (:func:`description_coverage`). Returns the JSON
+    report."""
     from assistant.errors import AssistantError
     from assistant.grounding.training import load_labels, split_corpus_paths
 
@@ -123,6 +126,9 @@ def evaluate_grounding(corpus=None, test=None, test_world: str | None = None, *,
     if plans:
         progress("(c) parsing every corpus description from its text")
         result["plans"] = plans_agreement(names, labels, corpus, xmls, limit=errors)
+    if descriptions:
+        progress("(d) parsing the annotated descriptions")
+        result["descriptions"] = description_coverage(names, corpus, descriptions, descriptions_world, errors)
     if test_set is not None:
         progress(f"(b) testing on {test_path}")
         result["test"] = held_out_accuracy(names, labels, test_set, errors)
@@ -182,4 +188,22 @@ def held_out_accuracy(names, labels, test_set, errors: int = 0) -> dict:
                 for number, rec, truth, guess in command_errors(grounder, test_set.commands)[:errors]]
     if wrong:
         out["errors"] = wrong
+    return out
+
+
+def description_coverage(names, corpus, paths, world_name: str, limit: int = 0) -> dict:
+    """Experiment (d): for each grounder, the share of the annotated descriptions in ``paths``
+    whose plan names the object they name and leaves no spatial word unused
+    (:func:`~assistant.grounding.coverage.plan_coverage`), parsed in the home ``world_name``."""
+    from assistant.grounding.coverage import plan_coverage
+    from assistant.grounding.parser import CommandParser
+    from assistant.language.corpus import read_corpora
+    from assistant.world import load_world
+
+    read = read_corpora(paths)
+    world = load_world(world_name)
+    out = {}
+    for name in names:
+        cov = plan_coverage(CommandParser.load(name, corpus, world), read.descriptions, limit=limit)
+        out[name] = {"files": [str(f) for f in read.files], "world": world_name, **cov}
     return out

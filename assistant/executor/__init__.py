@@ -42,12 +42,12 @@ from assistant.executor.sensing import (
 )
 from assistant.executor.search import SEARCH_BUDGET_S, SearchResult, SearchTask, room_order
 from assistant.executor.sightings import place_sightings
-from assistant.executor.trial import FetchRunner, object_visibility
+from assistant.executor.trial import is_visible, object_visibility
 
 __all__ = [
-    "BudgetSpent", "FETCH_BUDGET_S", "FetchResult", "FetchRunner", "FetchTask", "FurnitureSource", "NodeReport",
+    "BudgetSpent", "FETCH_BUDGET_S", "FetchResult", "FetchTask", "FurnitureSource", "NodeReport",
     "OracleFurniture", "PERCEPTION_MODES", "PlaceChooser", "SEARCH_BUDGET_S", "Said", "SearchResult", "SearchTask",
-    "SensedFurniture", "TaskContext", "enter_room", "room_order", "place_sightings", "make_furniture_source", "object_visibility",
+    "SensedFurniture", "TaskContext", "enter_room", "room_order", "place_sightings", "is_visible", "make_furniture_source", "object_visibility",
     "DepthObstacles", "DoorCrossing", "DrivableRobot", "ExecutionResult", "ExecutionStatus", "FloorplanLocalizer",
     "LocalizationUpdate", "Localizer", "MotionLimits", "Navigator", "NoPathError",
     "OccupancyMap", "PathFollower", "PlannedPath", "RoomGraph", "build_occupancy", "door_crossing",

@@ -52,6 +52,7 @@ from assistant.executor.outcome import ExecutionResult, ExecutionStatus
 from assistant.executor.reports import FetchResult, NodeReport
 from assistant.executor.rooms import room_of
 from assistant.executor.sensing import entity_centre, environment_items
+from assistant.executor.spoken import nearest_first, room_from_here, spoken_node
 from assistant.executor.survey import Surveyor
 from assistant.executor.viewing import in_view, viewing_poses
 from assistant.geometry import Pose2D, point_in_polygon, wrap_angle
@@ -104,6 +105,7 @@ class FetchTask:
     max_unseen_share: float = 0.5
     reference_range_m: float = 3.0
     max_looks_for_reference: int = 2
+    max_other_surfaces: int = 3  # surfaces looked at when the object is not seen on the target
 
     # ------------------------------------------------------------------ set-up
     def _setup(self, ctx: TaskContext) -> None:
@@ -114,6 +116,7 @@ class FetchTask:
         self.surveyor = Surveyor(ctx, self._on_frame, self.survey_range_m, self.max_unseen_share)
         self._surveyed = False
         self._said = NOTHING_SAID  # words said about the current target
+        self._said_from: Pose2D | None = None  # where "on your left" is said from, when not the node's start
         ctx.add_frame_listener(self._observe_moving)
         ctx.add_frame_listener(self._detect_objects)
 
@@ -177,12 +180,18 @@ class FetchTask:
             return FetchResult(ExecutionStatus.PARSE, "the command could not be understood: no room, "
                                "place or object was found in it", **out)
         if not plan.room:
-            if not plan.nodes or not plan.nodes[0].dynamic:  # nothing says where to go from here
+            # carried out from where the robot is (issue 16): the room it is in, or the one it
+            # faces through the nearest opening; "on your left" is said from the start pose
+            self._said_from = self.ctx.pose()
+            if plan.nodes and all(n.dynamic for n in plan.nodes):  # only moves: from here
+                room = room_of(self.ctx.world, self.ctx.pose())
+            else:
+                room = room_from_here(self.ctx.world, self.ctx.pose(), plan)
+            if room is None:
                 unused = [w for w in getattr(plan, "unused", []) or []]
                 extra = f" (words not understood: {', '.join(unused)})" if unused else ""
-                return FetchResult(ExecutionStatus.NO_ROOM, "the command names no room of this home"
-                                   f"{extra}; say which room ({', '.join(rooms)})", **out)
-            room = room_of(self.ctx.world, self.ctx.pose())
+                return FetchResult(ExecutionStatus.NO_ROOM, "the command names no room of this home and the "
+                                   f"robot is in none{extra}; say which room ({', '.join(rooms)})", **out)
         else:
             room = plan.room
         if room not in rooms:
@@ -260,21 +269,50 @@ class FetchTask:
         if not self._in_view(target):
             return FetchResult(ExecutionStatus.NOT_VISIBLE, f"the {target.name} is not in view at the end",
                                target_furniture=info, recovered=recovered, **out)
+        other = self._look_at_other_surfaces(plan, room, target, wanted)
+        if other is not None:  # the object was not on the target but on another surface the plan allows
+            target, recovered = other, True
+            info = {"id": target.id, "name": target.name, "centre": [round(v, 3) for v in entity_centre(target)]}
         message = f"facing the {target.name} in the {room}"
         if recovered:
             message += " (found by searching the likely surfaces)"
         return FetchResult(ExecutionStatus.SUCCESS, message, target_furniture=info, recovered=recovered, **out)
 
+    def _look_at_other_surfaces(self, plan, room: str, target: Entity, wanted: str) -> Entity | None:
+        """When the object detector does not see the plan's object from the target, face the
+        other surfaces the plan allows in the room, nearest first, until it does; the surface it
+        is seen on, or None (the target stays)."""
+        name = getattr(plan, "object", None)
+        if self.object_detector is None or not name:
+            return None
+        before = self.ctx.seen.get(name)
+        self._observe_here()
+        if self.ctx.seen.get(name) is not before or before is not None and before.furniture_id == target.id:
+            return None
+        pose = self.ctx.pose()
+        others = [e for e in self.chooser.likely_surfaces(room, wanted, pose, self._said) if e.id != target.id]
+        for other in nearest_first(others, pose)[:self.max_other_surfaces]:
+            before = self.ctx.seen.get(name)
+            if not self._face(other).success:
+                continue
+            self._observe_here()
+            if self.ctx.seen.get(name) is not before and self._in_view(other):
+                return other
+        self._face(target)
+        return None
+
     # ------------------------------------------------------------------ nodes
     def _run_node(self, node, room: str):
         rdts = node.rdts
-        if node.dynamic:
-            return self._dynamic_node(rdts[0], room)
+        if node.dynamic or (node.target == NO_TARGET and rdts[0].reference_kind == "furniture"):
+            return spoken_node(self.ctx, self.chooser, node, room) or self._dynamic_node(rdts[0], room)
         report = NodeReport(str(node), "static", ExecutionStatus.REFERENCE_NOT_FOUND.value)
         # furniture references first: "between the two chairs" singles a table out better than
         # "across the room"; the other pairs still weigh in (PlaceChooser.agreement)
         rdts = sorted(rdts, key=lambda r: r.reference in PLACE_REFERENCES)
-        said_from = self.ctx.pose()  # "on your right" keeps meaning this pose's right after a look elsewhere
+        # "on your right" keeps meaning this pose's right after a look elsewhere; with no room
+        # named, the start pose's
+        said_from = self._said_from or self.ctx.pose()
         self._said = Said.of(node)
         if not self._surveyed:  # a room too large to see from its door: look from further in first
             self._surveyed = True

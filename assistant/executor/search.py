@@ -415,29 +415,3 @@ class SearchTask:
             vantages=list(self._vantages), path_m=ctx.distance_m, sim_seconds=ctx.spent(),
             wall_seconds=time.perf_counter() - self._wall0, frames=self._frames, seen=dict(ctx.seen),
             found_at_wall_s=found_wall)
-
-
-def search_for(name: str, world, scene: str = "original", *, detector=None, furniture_detector=None,
-               miss_rate: float = 0.0, seed: int = 0, noise: bool = True, on_event=None,
-               start=None, robot: str = "sim", max_sim_seconds: float = SEARCH_BUDGET_S,
-               **params) -> SearchResult:
-    """Search ``scene`` of ``world`` (a :class:`World` or name) for ``name`` with a robot made
-    by :func:`~assistant.robot.make_robot` from ``robot`` (the simulator by default, from the
-    world's start pose or ``start``, with odometry noise the localizer corrects), sensed
-    furniture perception and, unless ``detector`` is given, a
-    :class:`~assistant.perception.objects.SimObjectDetector` for the scene's objects with
-    ``miss_rate``. ``furniture_detector`` shares a loaded :class:`FurnitureDetector` between
-    searches. ``params`` go to :class:`SearchTask`."""
-    from assistant.executor.sensing import SensedFurniture
-    from assistant.perception.objects import SimObjectDetector
-    from assistant.robot import make_robot
-    from assistant.world import load_world
-
-    w = world if not isinstance(world, str) else load_world(world)
-    sc = w.scene(scene)
-    if detector is None:
-        detector = SimObjectDetector.for_scene(sc, miss_rate=miss_rate, seed=seed)
-    perception = SensedFurniture(w, detector=furniture_detector)
-    with make_robot(robot, world=w, scene=sc.name, start=start, seed=seed, noise=noise) as bot:
-        ctx = TaskContext.start(w, bot, perception, max_sim_seconds=max_sim_seconds, on_event=on_event)
-        return SearchTask(detector, **params).run(ctx, name)

@@ -169,7 +169,7 @@ def plausible_size(entity) -> bool:
 
 def room_only_description(sighting: Sighting, style: str = "static") -> GeneratedDescription:
     """When perception found no furniture under the object: say only its room (true, short)."""
-    verb = "are" if sighting.name.endswith("s") and not sighting.name.endswith("ss") else "is"
+    verb = is_are(sighting.name)
     where = f" in the {sighting.room}" if sighting.room else " here"
     text = f"The {sighting.name} {verb}{where}."
     return GeneratedDescription(found=True, description=text, object=sighting.name, style=style,
@@ -200,7 +200,7 @@ def known_objects(world=None) -> list[str]:
 
 def oracle_sighting(world, scene: str, name: str) -> Sighting | None:
     """The object's position from the world file (the oracle search), or None when the scene
-    has no such object. Raises :class:`UnknownNameError` for a name the robot cannot look for."""
+    has no such object (any thing may be asked about)."""
     key = " ".join(name.lower().split())
     sc = world.scene(scene)
     for obj in sc.objects:
@@ -208,10 +208,7 @@ def oracle_sighting(world, scene: str, name: str) -> Sighting | None:
             room = world.floorplan.room_at(obj.x, obj.y)
             return Sighting(obj.name, obj.x, obj.y, sc.object_height_m(obj),
                             room=room.name if room else sc.item(obj.on).room, seen_from=world.start)
-    known = known_objects(world)
-    if key not in known:
-        raise UnknownNameError("object", name, known)
-    return None
+    return None  # any thing can be asked about; this scene has none (open vocabulary, issue 16)
 
 
 def oracle_environment(world, scene: str, resolution_m: float = 0.05) -> list:
@@ -246,6 +243,29 @@ def oracle_cases(world_names, scenes=("original", "modified")) -> Iterator[Oracl
                                  oracle_sighting(world, scene, obj.name))
 
 
+def some(name: str) -> str:
+    """The object said as one of its kind: "a wallet", "an envelope", "any keys", "any mail"."""
+    from assistant.world.catalogue import load_catalogue
+
+    if load_catalogue().number(name) != "one":
+        return f"any {name}"
+    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
+
+
+def is_are(name: str) -> str:
+    """The verb "be" agreeing with an object's name: "the keys are", "the mail is"."""
+    from assistant.world.catalogue import load_catalogue
+
+    return "are" if load_catalogue().number(name) == "plural" else "is"
+
+
+def it_them(name: str) -> str:
+    """The pronoun for an object: "them" for the keys, "it" for the wallet or the mail."""
+    from assistant.world.catalogue import load_catalogue
+
+    return "them" if load_catalogue().number(name) == "plural" else "it"
+
+
 def not_found_description(name: str, rooms: list[str]) -> GeneratedDescription:
     """The honest answer when the search found nothing."""
     rooms = [r for r in rooms]
@@ -255,6 +275,5 @@ def not_found_description(name: str, rooms: list[str]) -> GeneratedDescription:
         where = f"in the {rooms[0]}"
     else:
         where = "in the " + ", the ".join(rooms[:-1]) + f" and the {rooms[-1]}"
-    article = "an" if name[:1].lower() in "aeiou" else "a"
-    text = f"I looked {where} and did not find {article} {name}."
+    text = f"I looked {where} and did not find {some(name)}."
     return GeneratedDescription(found=False, description=text, object=name, searched_rooms=rooms)

@@ -20,6 +20,8 @@ vowel.
 
 from __future__ import annotations
 
+from assistant.world.catalogue import load_catalogue
+
 import functools
 import re
 
@@ -111,7 +113,7 @@ def _fill(template, node: ContentNode | None, object_name: str) -> list[str]:
             out.extend(words.get("room", "room").split())
         else:
             out.append(w)
-    if node is None and object_name.split()[-1].endswith("s") and not object_name.endswith("ss"):
+    if node is None and load_catalogue().number(object_name) == "plural":  # "the keys are"
         out = ["are" if w in ("is", "'s") else w for w in out]
     return out
 

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from assistant.errors import AssistantError, NotFittedError
+from assistant.grounding.spoken import spoken_groundings
 from assistant.grounding.types import FIELDS, ChunkGrounding, ChunkRecord, LabelledCommand
 from assistant.grounding.vocabulary import canonical_tokens, match_token
 
@@ -73,20 +74,24 @@ class BaseGrounder:
 
         Two checks keep a guess from standing in for words that were never said: a chunk with
         no word the grounder was trained on grounds to nothing, and a target object must be
-        named in the chunk (its word, or a synonym of it).
+        named in the chunk (its word, or a synonym of it). Then the words decide what they
+        plainly say (:func:`~assistant.grounding.spoken.spoken_groundings`: the object phrase
+        names any object, object landmarks, the listener's side, stop, turns, halfway …).
         """
         self._check_fitted()
         chunks = [normalise(r) for r in records]
         if not chunks:
             return []
         out = []
-        for chunk, grounding in zip(chunks, self._ground_chunks(chunks)):
-            if not any(w in self.vocabulary_ for w in chunk.words):
+        known = [any(w in self.vocabulary_ for w in chunk.words) for chunk in chunks]
+        for chunk, grounding, seen in zip(chunks, self._ground_chunks(chunks), known):
+            if not seen:
                 grounding = ChunkGrounding()
             elif grounding.object and not set(grounding.object.split()) & set(chunk.words):
                 grounding = replace(grounding, object=None)
             out.append(grounding)
-        return out
+        # the families of real phrasing the words decide: any object, object landmarks, stop …
+        return spoken_groundings(records, out, known)
 
     def _ground_chunks(self, chunks: Sequence[NormalisedChunk]) -> list[ChunkGrounding]:
         return [self._ground_one(c) for c in chunks]

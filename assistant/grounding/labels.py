@@ -23,7 +23,12 @@ from pathlib import Path
 
 from assistant.errors import DataFileError
 from assistant.grounding.types import FIELDS, ROOT, ChunkGrounding, ChunkRecord, LabelledCommand
-from assistant.grounding.vocabulary import canonical_value
+from assistant.grounding.objects import object_kind
+from assistant.grounding.spoken import STOP
+from assistant.grounding.vocabulary import FURNITURE_CATEGORIES, STRUCTURE_REFERENCES, canonical_value
+
+#: reference values that are not objects
+KNOWN_REFERENCES = frozenset({*STRUCTURE_REFERENCES, *FURNITURE_CATEGORIES, STOP})
 
 NUMBER_COLUMN = "CMD#"
 LABEL_COLUMN = "Chunk Name"
@@ -60,6 +65,19 @@ def parse_content(content: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
     if len(parts) % 2:
         raise ValueError(f"chunk content must alternate TAG word, got {content!r}")
     return tuple(parts[1::2]), tuple(parts[0::2])
+
+
+def label_value(field_name: str, value: str | None) -> str | None:
+    """A label value as the grounders give it: canonical words (:func:`canonical_value`), and an
+    object — the target object, or an object used as a reference — by the catalogue's name for
+    it, so annotation variants score alike ("glass case" and "glasses case", "key" and "keys",
+    "computer" and "laptop"; :func:`~assistant.grounding.objects.object_kind`)."""
+    value = canonical_value(field_name, value)
+    if value is None:
+        return None
+    if field_name == "target object" or (field_name == "reference" and value not in KNOWN_REFERENCES):
+        return object_kind(value)
+    return value
 
 
 def _value(raw: str | None) -> str | None:
@@ -110,7 +128,7 @@ def _read_one(path: Path, prefix: str, out: ChunkGroundingFile) -> None:
         except ValueError as error:
             out.problems.append(f"{path}: {where}: {error}; row skipped")
             continue
-        grounding = ChunkGrounding.from_fields({f: canonical_value(f, _value(row.get(f))) for f in FIELDS})
+        grounding = ChunkGrounding.from_fields({f: label_value(f, _value(row.get(f))) for f in FIELDS})
         key = prefix + number
         if key not in rows:
             rows[key] = []

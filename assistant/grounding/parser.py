@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 from assistant.errors import AssistantError
 from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
-from assistant.grounding.rooms import first_named_room, named_room_groundings
+from assistant.grounding.rooms import first_named_room, named_room_groundings, side_room_groundings
 from assistant.grounding.said import said_reference_groundings
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
@@ -82,6 +82,8 @@ class CommandParser:
         groundings = self.grounder.ground(records) if records else []
         # a room the home has, named in so many words, beats the grounder's guess among trained rooms
         groundings = named_room_groundings(records, groundings, self.world)
+        # "the room on your right": the floor plan says which room that is in this home
+        groundings = side_room_groundings(records, groundings, self.world)
         # a furniture reference no word names ("just ahead of you" → couch) is the listener
         groundings = said_reference_groundings(records, groundings)
         plan = assemble_plan(tree, groundings)
@@ -103,6 +105,6 @@ class CommandParser:
         corrections = dict(getattr(analysis, "corrections", {}) or {})
         records, groundings, plan = self.ground_tree(analysis.tree, corrections)
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
-                                   analysis.unknown, corrections)
+                                   analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)
         return ParseResult(analysis, records, groundings, plan)

@@ -24,6 +24,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+from assistant.grounding.amounts import Amount, is_amount_word, said_amount
+from assistant.grounding.loose import loose_moves
+from assistant.grounding.objects import is_object_word, object_phrases, said_object
+from assistant.grounding.spoken import PASSING_WORDS
 from assistant.grounding.types import ChunkGrounding, GroundingPlan, RDTNode
 from assistant.grounding.vocabulary import (
     DESCRIPTORS,
@@ -37,7 +41,7 @@ from assistant.grounding.vocabulary import (
 
 #: direction used when a reference chunk names none (e.g. "go forward to" → move front)
 DEFAULT_DIRECTION = {"move": "front", "room": "center", "wall": "front", "door": "front",
-                     "robot": "front"}
+                     "robot": "front", "stop": "center"}
 #: what each flag means (the dialogue turns them into questions)
 FLAG_HELP = {
     "empty": "nothing was said",
@@ -60,9 +64,12 @@ class _NodeBuilder:
     implied: bool = False
     parent_id: int | None = None
     descriptors: tuple[str, ...] = ()
+    amount: Amount = field(default_factory=Amount)
 
     def build(self) -> RDTNode:
-        return RDTNode(self.target, tuple(self.pairs), self.support, self.implied, self.descriptors)
+        distance = None if self.amount.distance_m is None else round(self.amount.distance_m, 2)
+        return RDTNode(self.target, tuple(self.pairs), self.support, self.implied, self.descriptors,
+                       distance, self.amount.degrees)
 
 
 def _has_verb(tokens) -> bool:
@@ -88,6 +95,31 @@ def said_directions(tokens, far_is_back: bool = False) -> list[str]:
     return out
 
 
+#: words said before a furniture word that place it in the room ("the back table", "the far desk")
+ROOM_SIDE_ADJECTIVES = {"back": "back", "far": "back", "farthest": "back", "furthest": "back",
+                        "rear": "back", "front": "front", "near": "front", "nearest": "front",
+                        "left": "left", "right": "right", "middle": "center", "center": "center"}
+
+
+def side_of_room(tokens) -> list[tuple[str, str]]:
+    """``(room, side)`` pairs of side words said as adjectives of a furniture word ("the back
+    table" → room back)."""
+    words = [str(t.text).lower() for t in tokens]
+    out = []
+    for i, w in enumerate(words):
+        side = ROOM_SIDE_ADJECTIVES.get(w)
+        if side is None or (i > 0 and words[i - 1] in ("your", "my", "his", "her", "of", "to", "on")):
+            continue
+        j = i + 1
+        while j < len(words) and (words[j] in DESCRIPTORS or words[j] in ROOM_SIDE_ADJECTIVES
+                                  or words[j] in ("white", "brown", "wooden", "wood")):
+            j += 1
+        if j < len(words) and canonical_tokens([words[j]], ["FUR"])[0][0] in FURNITURE_WORDS \
+                and ("room", side) not in out:
+            out.append(("room", side))
+    return out
+
+
 def said_furniture(words: Sequence[str], pos: Sequence[str]) -> str | None:
     """The last furniture word among a chunk's own words, canonical (``nightstand``, ``couch``)."""
     canon, _ = canonical_tokens(words, pos)
@@ -106,8 +138,15 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
     for g in groundings:
         if plan.room is None and g.room:
             plan.room = g.room
-        if plan.object is None and g.object:
-            plan.object = g.object
+    # the object: the first the catalogue knows, else the first said ("with a yellow clock on it
+    # the glasses case is …" fetches the glasses case)
+    # the object: the first of the object phrases the catalogue knows ("with a yellow clock on it
+    # the glasses case is …" fetches the glasses case); else one it knows said elsewhere, not as a
+    # landmark ("on the desk you will see the keys", chunked as a place); else the first said
+    objects = [g.object for g in groundings if g.object]
+    plan.object = next((o for o in objects if is_object_word(o)), None) \
+        or said_object([([t.text for t in c.own_tokens], [t.pos for t in c.own_tokens]) for c, _, _ in chunks]) \
+        or (objects[0] if objects else None)
 
     builders: list[_NodeBuilder] = []
 
@@ -115,20 +154,39 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
         direction = g.direction
         if direction is None:
             direction = DEFAULT_DIRECTION.get(g.reference, "front")
-            flags.append(f"missing_direction:{g.reference}")
+            if g.reference != "stop":
+                flags.append(f"missing_direction:{g.reference}")
         return g.reference, direction
+
+    loose: list = []  # the words of a run outside every chunk (top level only)
+
+    room_said = [False]  # a room chunk has been visited (moves said before it are its route)
+    route: list[_NodeBuilder] = []
+
+    def flush_loose() -> None:
+        for pair, _ in loose_moves([t.text for t in loose]):
+            builders.append(_NodeBuilder(NO_TARGET, [pair]))
+            if not room_said[0]:
+                route.append(builders[-1])
+        loose.clear()
 
     def visit(items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
         for item in items:
             if not hasattr(item, "label"):
+                if parent_key == 0:
+                    loose.append(item)
                 continue
+            if parent_key == 0:
+                flush_loose()
             g = by_id.get(id(item), ChunkGrounding())
+            room_said[0] = room_said[0] or bool(g.room)
             if g.target:
                 own = [t.text for t in item.own_tokens]
                 node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
                                     descriptors=said_descriptors(own))
                 if g.reference:
                     node.pairs.append(pair_of(g))
+                node.pairs.extend(p for p in side_of_room(item.own_tokens) if p not in node.pairs)
                 visit(item.items, node, id(item))
                 # move steps nested in the target chunk were appended first; the node follows
                 builders.append(node)
@@ -139,8 +197,13 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
                     # "on the table just ahead of you": no step is asked for, the place is said
                     # from where the robot stands
                     reference = "robot"
-                if reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
+                passing = enclosing is None and reference in FURNITURE_WORDS.values() and \
+                    any(str(t.text).lower() in PASSING_WORDS for t in item.own_tokens)
+                if passing:  # "pass the couch": a step to its far side, no target there
                     builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)]))
+                elif reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
+                    amount = said_amount([t.text for t in item.own_tokens]) if reference == "move" else Amount()
+                    builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)], amount=amount))
                 elif enclosing is not None:
                     enclosing.pairs.append((reference, direction))
                     if reference in ("room", "robot"):  # "at the back on the left": both hold
@@ -158,6 +221,12 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
             visit(item.items, enclosing, id(item))
 
     visit(tree.items, None, 0)
+    flush_loose()
+    if plan.room is not None:  # "go forward and turn into the room on the right": the way to the room
+        builders = [b for b in builders if not any(b is r for r in route)]
+    for b in builders:  # "… the statue, that's the statue": the object is no landmark of itself
+        if b.target != NO_TARGET:
+            b.pairs = [p for p in b.pairs if p[0] != plan.object]
     plan.nodes = [b.build() for b in builders]
     dynamic = [n.dynamic for n in plan.nodes]
     plan.kind = ("dynamic" if all(dynamic) else "static" if not any(dynamic) else "mixed") if plan.nodes else "static"
@@ -173,7 +242,7 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
 
 
 def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[str] = (),
-                 corrections: dict[str, str] | None = None) -> list[str]:
+                 corrections: dict[str, str] | None = None, plan: GroundingPlan | None = None) -> list[str]:
     """Words the plan could not use: unknown to the grounder (or the tagger) or outside every
     chunk, fillers excepted; a typo the tagger corrected counts as its correction. A descriptor
     inside a chunk ("dinner" in "the dinner table") is used: the plan's node keeps it to choose
@@ -181,18 +250,48 @@ def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[
     unknown_set = {u.lower() for u in unknown}
     corrections = corrections or {}
     labels = tree.nested_labels()
+    tokens = tree.tokens()
+    used = _loose_used(tokens, labels) | (_object_words_used(tree, plan) if plan is not None else set())
     out = []
-    for token, label in zip(tree.tokens(), labels):
+    for i, (token, label) in enumerate(zip(tokens, labels)):
         canon, _ = canonical_tokens([corrections.get(token.text, token.text)], [token.pos])
         word = canon[0] if canon else ""
-        if not word or word in FILLERS or not any(ch.isalnum() for ch in word):
+        if not word or word in FILLERS or not any(ch.isalnum() for ch in word) or i in used:
             continue
-        if label != "O" and token.text.lower() in DESCRIPTORS:
-            continue
+        if label != "O" and (is_amount_word(word) or token.text.lower() in DESCRIPTORS):
+            continue  # a count, unit or angle of a move; a descriptor the node keeps
         if label == "O" or token.text.lower() in unknown_set or (word not in vocabulary
                                                                     and word not in FURNITURE_WORDS):
             out.append(token.text)
     return out
+
+
+def _object_words_used(tree, plan: GroundingPlan) -> set[int]:
+    """Positions of the nouns of the objects the plan uses: its object, and objects that are
+    references of its nodes ("next to the tissue box")."""
+    kinds = {plan.object} | {r for n in plan.nodes for r, _ in n.pairs}
+    used: set[int] = set()
+    position = {id(t): i for i, t in enumerate(tree.tokens())}
+    for chunk, _, _ in tree.chunks():
+        own = chunk.own_tokens
+        nouns = {n for found, _ in object_phrases([t.text for t in own], [t.pos for t in own])
+                 if found.kind in kinds for n in found.nouns}
+        used.update(position[id(t)] for t in own if t.text.lower() in nouns and id(t) in position)
+    return used
+
+
+def _loose_used(tokens, labels) -> set[int]:
+    """Positions of words outside the chunks that a loose move uses ("go forward and …")."""
+    used: set[int] = set()
+    run: list[int] = []
+    for i, label in enumerate([*labels, None]):
+        if label == "O":
+            run.append(i)
+            continue
+        for _, positions in loose_moves([tokens[j].text for j in run]):
+            used.update(run[p] for p in positions)
+        run = []
+    return used
 
 
 def finish_flags(plan: GroundingPlan, *, words: int, world=None) -> GroundingPlan:

@@ -23,7 +23,14 @@ from dataclasses import replace
 from assistant.grounding.types import ChunkGrounding, ChunkRecord
 from assistant.grounding.vocabulary import canonical_word
 
-__all__ = ["first_named_room", "named_room", "named_room_groundings", "room_names_of"]
+__all__ = ["COMMON_ROOMS", "side_room_groundings", "first_named_room", "named_room", "named_room_groundings", "room_names_of",
+           "unknown_room_named"]
+
+#: rooms people name in homes (lower case); one a home does not have is answered, not guessed
+COMMON_ROOMS = ("kitchen", "bathroom", "bedroom", "living room", "dining room", "office", "hallway",
+                "garage", "laundry room", "basement", "attic", "den", "study", "guest room",
+                "nursery", "playroom", "pantry", "porch", "studio", "meeting room", "family room",
+                "sitting room", "lounge", "toilet", "utility room", "spare room", "cellar")
 
 #: chunk labels that can say where to go (a room *target* phrase, outside or inside a room, the
 #: object phrase and its "in the hallway");
@@ -119,3 +126,53 @@ def first_named_room(records: Sequence[ChunkRecord], world) -> str | None:
         if room is not None:
             return room
     return None
+
+
+def unknown_room_named(words: Sequence[str], world) -> str | None:
+    """The first room of :data:`COMMON_ROOMS` the words name as a goal that the home does not
+    have ("go to the kitchen" in a home without one), or None."""
+    rooms = set(room_names_of(world))
+    if not rooms:
+        return None
+    other = [r for r in COMMON_ROOMS if r not in rooms and not any(r in mine.split() for mine in rooms)]
+    return named_room(words, other, PATH_WORDS - {"from", "of"})
+
+
+#: words of a room phrase that say the robot goes in ("the room on your right", "the door on the left")
+ENTERING = frozenset({"room", "door", "doorway", "entrance", "opening", "into", "enter", "entryway",
+                      "doors", "openings", "in"})
+#: words said before that take the robot elsewhere first ("the end of the hallway", "the second room")
+ELSEWHERE = frozenset({"end", "down", "through", "past", "second", "third", "last", "far", "beyond", "across"})
+#: listener sides
+SIDES = ("left", "right")
+
+
+def side_room_groundings(records: Sequence[ChunkRecord], groundings: Sequence[ChunkGrounding],
+                         world) -> list[ChunkGrounding]:
+    """``groundings`` with the first room phrase that names no room but a side from the start
+    ("the room on your right", "take a left into the room") grounded by the floor plan: the room
+    joined to the start's through the passage on that side
+    (:meth:`~assistant.world.model.Floorplan.room_faced`). Left alone when something said
+    before takes the robot elsewhere first ("the end of the hallway"), or without a world."""
+    out = list(groundings)
+    if world is None:
+        return out
+    rooms = room_names_of(world)
+    generic: list[int] = []  # earlier room phrases that name no room ("the room")
+    for i, (record, g) in enumerate(zip(records, groundings)):
+        words = [w.strip().lower() for w in record.words]
+        if set(words) & ELSEWHERE or named_room(words, rooms) is not None:
+            return out
+        if record.label not in ("ORMTP", "ORMRP"):
+            continue
+        sides = [w for w in words if w in SIDES]
+        if not sides or (record.label == "ORMTP" and not set(words) & ENTERING):
+            generic.append(i)
+            continue
+        room = world.floorplan.room_faced(world.start, sides[-1])
+        if room is not None:
+            out[i] = replace(g, room=room)
+            for j in generic:
+                out[j] = replace(out[j], room=None)
+        return out
+    return out

@@ -25,7 +25,7 @@ from assistant.grounding.scored import ScoredGrounder
 log = logging.getLogger(__name__)
 
 #: bump when a grounder's features or scoring change: cached grounders are then retrained
-GROUNDING_VERSION = "grounding-6"
+GROUNDING_VERSION = "grounding-7"
 #: grounder name → class; ``DEFAULT_GROUNDER`` was picked by measurement (docs/grounding.md)
 GROUNDERS = {"scored": ScoredGrounder, "learned": LearnedGrounder, "combined": CombinedGrounder}
 DEFAULT_GROUNDER = "combined"

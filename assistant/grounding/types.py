@@ -108,6 +108,10 @@ class RDTNode:
     (``nightstand``, ``desk``) when it differs from the category word. ``descriptors``: the
     size, shape and kind words said with the target, canonical (``("small", "round")`` for
     "the little round table"; :data:`~assistant.grounding.vocabulary.DESCRIPTORS`).
+    ``distance_m`` / ``degrees``: how far a move goes ("two steps forward": 1.2 m, a step being
+    :data:`~assistant.grounding.amounts.STEP_M`) and how far a turn turns ("turn left 90
+    degrees"); None when not said. A ``stop`` node (``stop-center-non``) ends the motion where
+    the robot is.
     """
 
     target: str
@@ -115,6 +119,8 @@ class RDTNode:
     support: str | None = None
     implied_target: bool = False
     descriptors: tuple[str, ...] = ()
+    distance_m: float | None = None
+    degrees: float | None = None
 
     @property
     def referenced(self) -> bool:
@@ -138,7 +144,8 @@ class RDTNode:
                 "pairs": [[r, d] for r, d in self.pairs],
                 "alternatives": [str(r) for r in self.rdts],
                 "support": self.support, "implied_target": self.implied_target,
-                "descriptors": list(self.descriptors)}
+                "descriptors": list(self.descriptors), "distance_m": self.distance_m,
+                "degrees": self.degrees}
 
 
 @dataclass

@@ -45,7 +45,7 @@ DESCRIPTORS: dict[str, str] = _WORDS.descriptors
 FILLERS = frozenset({
     "um", "uh", "er", "erm", "hmm", "well", "so", "okay", "ok", "please", "like", "just",
     "and", "then", "now", "the", "a", "an", "of", "to", "in", "on", "at", "it", "is", "you",
-    "robot", "hey", "oh", "yeah", "alright", "go", ",", ".", "!", "?", ";", ":",
+    "robot", "brian", "hey", "oh", "yeah", "alright", "go", ",", ".", "!", "?", ";", ":",
     "will", "can", "could", "would", "be", "there", "there's", "i", "me", "my", "your", "again",
 })
 

@@ -143,22 +143,29 @@ class FeatureBlocks(TransformerMixin, BaseEstimator):
 
     The input is ``[M_h | shape descriptor]`` (``mh_length`` + the rest). ``features="mh"`` keeps
     the dissertation's normal feature histogram alone; ``"mh+shape"`` adds the shape
-    descriptor, its standardised columns multiplied by ``shape_weight`` so 49 columns can
-    count against 800 in a kernel's distance.
+    descriptor without its last ``cue_columns`` (the side cues of issue 20), its standardised
+    columns multiplied by ``shape_weight`` so 49 columns can count against 800 in a kernel's
+    distance; ``"mh+shape+cues"`` (the verifier's) keeps the side cues too, multiplied by
+    ``cue_weight`` more.
     """
 
-    def __init__(self, features="mh+shape", shape_weight=4.0, mh_length=800):
+    def __init__(self, features="mh+shape", shape_weight=4.0, mh_length=800, cue_columns=2,
+                 cue_weight=3.0):
         self.features = features
         self.shape_weight = shape_weight
         self.mh_length = mh_length
+        self.cue_columns = cue_columns
+        self.cue_weight = cue_weight
 
     def _select(self, X):
         X = np.asarray(X, dtype=float)
         if self.features == "mh":
             return X[:, :self.mh_length]
         if self.features == "mh+shape":
+            return X[:, :X.shape[1] - self.cue_columns]
+        if self.features == "mh+shape+cues":
             return X
-        raise ValueError(f"features must be 'mh' or 'mh+shape', got {self.features!r}")
+        raise ValueError(f"features must be 'mh', 'mh+shape' or 'mh+shape+cues', got {self.features!r}")
 
     def fit(self, X, y=None):
         Z = self._select(X)
@@ -170,8 +177,10 @@ class FeatureBlocks(TransformerMixin, BaseEstimator):
     def transform(self, X):
         check_is_fitted(self, "mean_")
         Z = (self._select(X) - self.mean_) / self.scale_
-        if self.features == "mh+shape":
+        if self.features != "mh":
             Z[:, self.mh_length:] *= self.shape_weight
+        if self.features == "mh+shape+cues":
+            Z[:, -self.cue_columns:] *= self.cue_weight
         return Z
 
 
@@ -267,6 +276,29 @@ class FurnitureClassifier(ClassifierMixin, BaseEstimator):
         cats = np.array([category_of(c) for c in self.classes_])
         conf = np.array([p[i, cats == category_of(s)].sum() for i, s in enumerate(sub)])
         return sub, conf
+
+
+#: the verifier's say (:func:`verified_category`): the least share of open bearings (knee space
+#: seen under the top) for a bed or couch to become a table, and of closed ones (a box's
+#: side) for it to become a night stand (small table) or ``other``
+KNEE_SPACE_SHARE = 0.3
+CLOSED_SIDE_SHARE = 0.5
+
+
+def verified_category(category: str, verifier_category: str, solid: float, open_: float) -> str:
+    """The detector's category of a sample the main classifier calls ``category``, given the
+    verifier's call and the side cues (``features.side_cues``): a bed or couch stays one unless
+    the verifier — trained on desks, night stands, store beds, benches and dressers too — calls
+    it a table and knee space is seen under its top (``open_`` ≥ :data:`KNEE_SPACE_SHARE`), or
+    a small table or ``other`` and its near side is closed (``solid`` ≥
+    :data:`CLOSED_SIDE_SHARE`). Other categories are the main classifier's."""
+    if category not in ("bed", "couch"):
+        return category
+    if verifier_category == "large table" and open_ >= KNEE_SPACE_SHARE:
+        return verifier_category
+    if verifier_category in ("small table", "other") and solid >= CLOSED_SIDE_SHARE:
+        return verifier_category
+    return category
 
 
 def circular_mean(angles: np.ndarray) -> float:

@@ -16,7 +16,7 @@ from functools import lru_cache
 import numpy as np
 
 from assistant.geometry import GridMap, Pose2D, wrap_angle
-from assistant.perception.classifiers import category_of
+from assistant.perception.classifiers import category_of, verified_category
 from assistant.perception.features import (
     estimate_normals,
     normal_histogram,
@@ -86,7 +86,8 @@ class UnknownItem:
     """Something standing on the floor that the detector would not name: ``best`` is the
     classifier's choice (a category, or "other": a bench, dresser or other thing that is none of
     the five) and ``probability`` its confidence; ``why`` is "other", "unsure" (under
-    ``min_confidence``) or "no surface" (tall, with no seat, mattress or top). Same frame and
+    ``min_confidence``), "disputed" (a bed or couch cut by the range that the verifier reads
+    otherwise) or "no surface" (tall, with no seat, mattress or top). Same frame and
     units as :class:`Detection`."""
 
     best: str
@@ -136,21 +137,25 @@ class FurnitureDetector:
     models trained on the simulator's database, trained on first use); ``orientation`` picks
     the estimator ("plane" — this product's, default — or "linear", Table 3-3);
     ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains) —
-    they and the samples it calls ``other`` (benches, dressers) are reported as
-    :class:`UnknownItem`; a detection under ``sure_confidence`` is marked ``unsure``;
+    they, the samples it calls ``other`` (benches, dressers) and a bed or couch cut by the
+    sample range that the verifier reads as something else ("disputed": the item goes on
+    beyond what was seen) are reported as :class:`UnknownItem`; a detection under ``sure_confidence`` is marked ``unsure``;
     ``regroup`` joins a bed cut by its footboard's shadow and splits a night stand off a bed's
-    side when the classifier confirms it (:mod:`assistant.perception.regroup`);
+    side when the classifier confirms it (:mod:`assistant.perception.regroup`); ``verify``
+    lets the models' verifier overrule a bed or couch (``classifiers.verified_category``);
     a sample taller than ``tall_m`` with under ``min_surface_share`` of its points on upward
     surfaces 0.3–0.75 m high (seat, mattress, table top) is not furniture of any category —
     measured on real frames, these are shelves, wardrobes and water heaters the classifier
-    would otherwise call beds. ``weigh_coverage`` sets each detection's ``coverage`` (how much
-    of the item the view showed; 1 when False), which weighs it in fusion.
+    would otherwise call beds (a night stand found beside a bed, :func:`night_stands`, is
+    exempt: with a tall lamp on it it has little top to see).
+    ``weigh_coverage`` sets each detection's ``coverage`` (how much of the item the view
+    showed; 1 when False), which weighs it in fusion.
     """
 
     def __init__(self, models=None, orientation: str = "plane", params: FrameParams | None = None,
                  min_confidence: float = 0.45, min_height_m: float = 0.3, tall_m: float = 1.3,
                  min_surface_share: float = 0.05, weigh_coverage: bool = True,
-                 sure_confidence: float = 0.7, regroup: bool = True):
+                 sure_confidence: float = 0.7, regroup: bool = True, verify: bool = True):
         if orientation not in ORIENTATION_METHODS:
             from assistant.errors import UnknownNameError
 
@@ -169,6 +174,7 @@ class FurnitureDetector:
         self.weigh_coverage = weigh_coverage
         self.sure_confidence = sure_confidence
         self.regroup = regroup
+        self.verify = verify
         self._floors: dict = {}  # pose key → the floor plane last found from that pose
 
     def analyse(self, frame: DepthFrame, use_mount: bool = True, pose_key=None) -> DetectionResult:
@@ -193,11 +199,10 @@ class FurnitureDetector:
                                    {**analysis.timings_ms, "total": (t1 - t0) * 1e3})
         cam = analysis.camera_xyz
         shapes = [shape_descriptor(s.points, s.normals, camera_xy=cam[:2]) for s in analysis.samples]
-        subclasses, confidence = self.models.classifier.predict_with_confidence(
-            np.hstack([analysis.features, np.array(shapes)]))
-        samples, labels = list(analysis.samples), [(str(a), float(b)) for a, b in zip(subclasses, confidence)]
+        samples = list(analysis.samples)
         for sample, shape in zip(samples, shapes):
             sample.info["shape"] = shape
+        labels = self._labels(np.hstack([analysis.features, np.array(shapes)]), samples)
         if self.regroup:
             samples, labels, notes = regroup(samples, labels, [float(sh[43]) for sh in shapes], cam,
                                              lambda parts: self._classify(parts, cam))
@@ -220,8 +225,32 @@ class FurnitureDetector:
             s.info["shape"] = shape_descriptor(s.points, s.normals, camera_xy=camera_xyz[:2])
             rows.append(np.hstack([normal_histogram(s.points, s.normals, self.params.features),
                                    s.info["shape"]]))
-        subs, conf = self.models.classifier.predict_with_confidence(np.array(rows))
-        return [(str(a), float(b)) for a, b in zip(subs, conf)]
+        return self._labels(np.array(rows), samples, every=True)
+
+    def _labels(self, X: np.ndarray, samples: list, every: bool = False) -> list[tuple[str, float]]:
+        """(subclass, confidence) per row of ``[M_h | shape descriptor]``: the main
+        classifier's, and for the beds and couches among them (``every``: for all, as the
+        regrouped parts need) the verifier's say
+        (:func:`~assistant.perception.classifiers.verified_category`) — a sample it turns into
+        another category gets the verifier's subclass and confidence; ``sample.info["verified"]``
+        records the change."""
+        subs, conf = self.models.classifier.predict_with_confidence(X)
+        labels = [(str(a), float(b)) for a, b in zip(subs, conf)]
+        verifier = getattr(self.models, "verifier", None)
+        if verifier is None or not self.verify:
+            return labels
+        rows = [i for i, (sub, _) in enumerate(labels) if every or category_of(sub) in ("bed", "couch")]
+        if not rows:
+            return labels
+        vsubs, vconf = verifier.predict_with_confidence(X[rows])
+        for i, vsub, vc in zip(rows, vsubs, vconf):
+            samples[i].info["checked"] = category_of(str(vsub))
+            solid, open_ = X[i, -2], X[i, -1]
+            final = verified_category(category_of(labels[i][0]), category_of(str(vsub)), solid, open_)
+            if final != category_of(labels[i][0]):
+                samples[i].info["verified"] = f"{labels[i][0]} → {vsub}"
+                labels[i] = (str(vsub), float(vc))
+        return labels
 
     def _detections(self, samples: list, labels: list, cam: np.ndarray, pose
                     ) -> tuple[list[Detection], list[UnknownItem]]:
@@ -229,6 +258,7 @@ class FurnitureDetector:
         frame_name = "world" if pose is not None else "camera-floor"
         out: list[Detection] = []
         unknown: list[UnknownItem] = []
+        labels = night_stands(samples, labels)
         for sample, (sub, conf) in zip(samples, labels):
             category = category_of(sub)
             why = None
@@ -238,7 +268,11 @@ class FurnitureDetector:
                 why = "other"
             elif conf < self.min_confidence:
                 why = "unsure"
-            elif not _has_furniture_surface(sample.info["shape"], self.tall_m, self.min_surface_share):
+            elif (category in ("bed", "couch") and sample.info.get("checked", category) != category
+                  and range_cut(sample, self.params.samples.max_forward_m)):
+                why = "disputed"  # cut by the range and the verifier reads it otherwise
+            elif "night_stand" not in sample.info and not _has_furniture_surface(
+                    sample.info["shape"], self.tall_m, self.min_surface_share):
                 why = "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
             if why is not None:
                 if why != "low":
@@ -275,6 +309,27 @@ class FurnitureDetector:
     def detect(self, frame: DepthFrame, grid: GridMap | None = None) -> list[Entity]:
         """Detections as short-term entities on ``grid`` (default: a 0.1 m grid around them)."""
         return detections_to_entities(self.analyse(frame).detections, grid)
+
+
+def night_stands(samples: list, labels: list, max_gap_m: float = 0.6, max_length_m: float = 1.4,
+                 min_closed: float = 0.5) -> list:
+    """``labels`` with each closed box called ``other`` (side cue ``solid`` ≥ ``min_closed``,
+    no longer than ``max_length_m``) that stands within ``max_gap_m`` of a sample labelled a bed
+    relabelled a small table: a night stand — the small, tall box beside a bed (with a lamp on
+    it the verifier reads it as a dresser, ``other``)."""
+    beds = [s.cells_xy_m for s, (sub, _) in zip(samples, labels) if category_of(sub) == "bed"]
+    if not beds:
+        return labels
+    out = list(labels)
+    for i, (s, (sub, conf)) in enumerate(zip(samples, labels)):
+        shape = s.info.get("shape")
+        if category_of(sub) != OTHER or shape is None or shape[-2] < min_closed or shape[41] > max_length_m:
+            continue
+        gap = min(float(np.min(np.linalg.norm(b[:, None, :] - s.cells_xy_m[None, ::4, :], axis=2))) for b in beds)
+        if gap <= max_gap_m:
+            s.info["night_stand"] = f"beside a bed, {gap:.2f} m"
+            out[i] = ("small table", conf)
+    return out
 
 
 def _has_furniture_surface(shape: np.ndarray, tall_m: float, min_share: float) -> bool:

@@ -48,6 +48,7 @@ REAL_SENSOR_STUDY_PLAN = ViewPlan(grid=False, random_per_item=20, jitter=0.2, se
                                   wall=0.6, sensor="real")
 DEFAULT_METHOD = "gsvm"
 DEFAULT_FEATURES = "mh+shape"
+VERIFIER_FEATURES = "mh+shape+cues"
 
 
 def training_database(plans=TRAINING_PLANS, items=None, variants: bool = True) -> Database:
@@ -81,15 +82,25 @@ class PerceptionModels:
     plane_orientation: PlaneOrientationEstimator
     subclasses: tuple[str, ...]
     training_samples: int
+    verifier: FurnitureClassifier | None = None
 
 
 def fit_models(db: Database, method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
-               seed: int = 0) -> PerceptionModels:
-    """Fit all models on a labelled database (subclasses by k-means, 3.6.3)."""
+               seed: int = 0, verifier_db: Database | None = None) -> PerceptionModels:
+    """Fit all models on a labelled database (subclasses by k-means, 3.6.3); with
+    ``verifier_db`` (the study views and the training variants' views) also the verifier: the
+    same method on the features with the side cues (:data:`VERIFIER_FEATURES`), which knows
+    desks, night stands, store beds and ``other`` things (the detector's ``verify``)."""
     sub = view_subclasses(db.X, db.category, db.alpha, seed=seed)
     clf = FurnitureClassifier(method, features, random_state=seed).fit(classifier_input(db), sub)
     lin = LinearOrientationEstimator().fit(db.Q, sub, db.facing)
-    return PerceptionModels(clf, lin, PlaneOrientationEstimator().fit(), tuple(sorted(set(sub))), len(db))
+    verifier = None
+    if verifier_db is not None:
+        vsub = view_subclasses(verifier_db.X, verifier_db.category, verifier_db.alpha, seed=seed)
+        verifier = FurnitureClassifier(method, VERIFIER_FEATURES, random_state=seed).fit(
+            classifier_input(verifier_db), vsub)
+    return PerceptionModels(clf, lin, PlaneOrientationEstimator().fit(), tuple(sorted(set(sub))), len(db),
+                            verifier)
 
 
 def models_key(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURES,
@@ -118,8 +129,8 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
         return models
     from assistant.progress import working
 
-    database = training_database(plans, items, variants)
     with working(f"training the furniture classifier ({method}; first use, cached after)"):
-        models = fit_models(database, method, features)
+        models = fit_models(training_database(plans, items, variants=False), method, features,
+                            verifier_db=training_database(plans, items) if variants else None)
     write_cache(path, models)
     return models

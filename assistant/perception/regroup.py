@@ -3,13 +3,15 @@
 The floor grid's connected components are the detector's samples; two cases they get wrong on
 real frames are put right here, each as a hypothesis the classifier confirms:
 
-* **a bed cut by its footboard's shadow** (:func:`shadow_joins`): seen from its foot end, the
-  footboard hides the mattress behind it, and only a strip of mattress far beyond shows — two
-  samples, neither a bed. A sample B lying behind a sample A (along the camera's rays), thin
+* **a bed cut by its footboard's shadow** (:func:`shadow_candidates`): seen from its foot end,
+  the footboard hides the mattress behind it, and only a strip of mattress far beyond shows —
+  two samples, neither a bed. A sample B lying behind a sample A (along the camera's rays), thin
   along them, whose near edge is no farther than where a ray grazing A's top comes down to B's
   top surface, is joined with A's part that rises to B's height (the footboard; a bench in
-  front of it stays apart) — kept if the classifier reads the join as a bed.
-* **a night stand beside a bed** (:func:`side_splits`): a small box standing against a bed's
+  front of it stays apart) — kept if the classifier reads the join as a bed, or the verifier
+  (``info["checked"]``) the part before the board as ``other`` (a bench: the board and what
+  lies in its shadow are one item).
+* **a night stand beside a bed** (:func:`side_candidates`): a small box standing against a bed's
   long side is one component with it. Cells that stick out sideways beyond the bed's width
   (the median of its cross-section along its length) by more than a margin, in a piece of
   night-stand size, are split off — kept if the classifier reads that piece as a small table
@@ -163,26 +165,46 @@ def side_candidates(sample: FurnitureSample, p: RegroupParams = RegroupParams()
 
 def _side_piece(sample: FurnitureSample, centre: np.ndarray, major: np.ndarray, minor: np.ndarray,
                 p: RegroupParams) -> tuple[FurnitureSample, FurnitureSample] | None:
-    """:func:`side_candidates` along one choice of the item's length axis ``major``."""
+    """:func:`side_candidates` along one choice of the item's length axis ``major``: the
+    largest connected piece (8-neighbour, on the sample's cells) of the cells outside the
+    median width that has a night stand's size."""
+    from scipy import ndimage
+
     cells = sample.cells_xy_m
+    grid = math.sqrt(_cell_area(sample))
     along, across = (cells - centre) @ major, (cells - centre) @ minor
     k = np.floor((along - along.min()) / 0.1).astype(int)
     groups = np.unique(k)
     lo = np.array([across[k == i].min() for i in groups])
     hi = np.array([across[k == i].max() for i in groups])
-    width_lo, width_hi = float(np.median(lo)), float(np.median(hi))
-    pa, pal = (sample.points[:, :2] - centre) @ minor, (sample.points[:, :2] - centre) @ major
-    for side, edge in ((1, width_hi), (-1, width_lo)):
+    ij = np.round((cells - cells.min(axis=0)) / grid).astype(int)
+    point_ij = np.floor((sample.points[:, :2] - cells.min(axis=0) + grid / 2) / grid + 1e-6).astype(int)
+    for side, edge in ((1, float(np.median(hi))), (-1, float(np.median(lo)))):
         outside = (across - edge) * side > p.side_margin_m
-        if np.count_nonzero(outside) * _cell_area(sample) < p.min_side_m2:
+        if np.count_nonzero(outside) * grid * grid < p.min_side_m2:
             continue
-        if max(np.ptp(along[outside]), np.ptp(across[outside])) > p.max_side_m:
+        image = np.zeros(ij.max(axis=0) + 1, dtype=bool)
+        image[ij[outside, 0], ij[outside, 1]] = True
+        labels, count = ndimage.label(image, structure=np.ones((3, 3)))
+        best = None
+        for c in range(1, count + 1):
+            piece = outside & (labels[ij[:, 0], ij[:, 1]] == c)
+            if np.count_nonzero(piece) * grid * grid < p.min_side_m2:
+                continue
+            if max(np.ptp(along[piece]), np.ptp(across[piece])) > p.max_side_m:
+                continue
+            if best is None or piece.sum() > best.sum():
+                best = piece
+        if best is None:
             continue
-        in_band = (pal >= along[outside].min() - 0.05) & (pal <= along[outside].max() + 0.05)
-        piece_pts = in_band & ((pa - edge) * side > p.side_margin_m / 2)
+        inside = np.zeros_like(image)
+        inside[ij[best, 0], ij[best, 1]] = True
+        ok = (point_ij >= 0).all(axis=1) & (point_ij < image.shape).all(axis=1)
+        piece_pts = np.zeros(len(sample.points), dtype=bool)
+        piece_pts[ok] = inside[point_ij[ok, 0], point_ij[ok, 1]]
         if piece_pts.sum() < 10 or (~piece_pts).sum() < 10:
             continue
-        return part(sample, ~piece_pts, ~outside), part(sample, piece_pts, outside)
+        return part(sample, ~piece_pts, ~best), part(sample, piece_pts, best)
     return None
 
 
@@ -200,7 +222,7 @@ def regroup(samples: list[FurnitureSample], labels: list[tuple[str, float]], sur
         if ia in used or ib in used:
             continue
         (sub, conf), *rest = classify([join] + ([near] if near is not None else []))
-        if category_of(sub) != "bed":
+        if category_of(sub) != "bed" and not (near is not None and near.info.get("checked") == "other"):
             continue
         used.update((ia, ib))
         join.info["joined"] = "shadow"

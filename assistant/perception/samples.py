@@ -119,7 +119,6 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
     columns (:func:`wall_continuation`). Returns the samples and counts of what was dropped and
     why.
     """
-    import open3d as o3d
     from scipy import ndimage
 
     p = params
@@ -142,30 +141,8 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
     flat = iy * nx + ix
     occupied = np.zeros(nx * ny, dtype=bool)
     occupied[flat] = True
-    clear = pts[:, 2] > p.max_height_m  # columns rising above furniture height: walls, wardrobes
-    if r is not None and image_height:
-        clear |= r < max(2.0, p.top_rows_fraction * image_height)  # columns leaving the view
-    if clear.any():
-        cleared = np.zeros(nx * ny, dtype=bool)
-        cleared[flat[clear]] = True
-        if p.wall_remains_top_m is not None:
-            cleared = _with_wall_remains(cleared, occupied, flat, pts[:, 2], (ny, nx),
-                                         p.wall_remains_top_m)
-        if (p.wall_trace_band_m is not None and r is not None and c is not None
-                and camera_xy is not None):
-            # the wall: the clear points and, in cleared cells, what is above furniture height
-            top = p.wall_remains_top_m if p.wall_remains_top_m is not None else p.max_height_m
-            wall = wall_continuation(pts, r, c, clear | (cleared[flat] & (pts[:, 2] > top)),
-                                     camera_xy, p.wall_trace_band_m)
-            stats["wall_points"] = int(np.count_nonzero(wall))
-            if stats["wall_points"]:
-                keep = ~wall
-                pts, r, c = np.compress(keep, pts, axis=0), r[keep], c[keep]
-                flat = flat[keep]
-                occupied = np.zeros(nx * ny, dtype=bool)
-                occupied[flat] = True
-        stats["cleared_cells"] = int(np.count_nonzero(cleared))
-        occupied[cleared] = False
+    pts, r, c, flat, occupied = _clear_columns(pts, r, c, flat, occupied, image_height, camera_xy,
+                                               (ny, nx), p, stats)
     grid = occupied.reshape(ny, nx)
     labels, count = ndimage.label(grid, structure=np.ones((3, 3), dtype=int))
     if p.split_min_area_m2 is not None and count:
@@ -196,21 +173,68 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
         if _is_wall_piece(sp, p):
             stats["dropped_wall"] += 1
             continue
-        cells = np.argwhere(labels == lab)  # (iy, ix)
-        cells_xy = np.stack([p.x_range_m[0] + (cells[:, 1] + 0.5) * p.grid_m,
-                             p.y_range_m[0] + (cells[:, 0] + 0.5) * p.grid_m], axis=1)
-        touches = False
-        if c is not None and image_width:
-            cc = c[idx]
-            margin = max(3.0, 0.01 * image_width)
-            touches = bool((cc.min() < margin) or (cc.max() > image_width - 1 - margin))
-        if r is not None and image_height:
-            touches = touches or bool(r[idx].max() > image_height - 1 - max(3.0, 0.01 * image_height))
-        cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(sp))
-        down = np.asarray(cloud.voxel_down_sample(p.voxel_m).points)
-        samples.append(FurnitureSample(down, cells_xy, height, touches,
-                                       info={"raw_points": int(len(sp)), "cells": int(len(cells))}))
+        touches = _touches_border(None if r is None else r[idx], None if c is None else c[idx],
+                                  image_height, image_width)
+        samples.append(_sample(sp, np.argwhere(labels == lab), height, touches, p))
     return samples, stats
+
+
+def _clear_columns(pts, r, c, flat, occupied, image_height, camera_xy, shape, p: SampleParams, stats: dict):
+    """Clear the grid cells of columns that are not furniture: points above furniture height
+    (walls, wardrobes), columns running out of the top of the view, and a wall followed down
+    its image columns (:func:`wall_continuation`). Returns ``(points, rows, cols, flat cell
+    index, occupied)`` without the wall's points; counts go to ``stats``."""
+    ny, nx = shape
+    clear = pts[:, 2] > p.max_height_m  # columns rising above furniture height: walls, wardrobes
+    if r is not None and image_height:
+        clear |= r < max(2.0, p.top_rows_fraction * image_height)  # columns leaving the view
+    if clear.any():
+        cleared = np.zeros(nx * ny, dtype=bool)
+        cleared[flat[clear]] = True
+        if p.wall_remains_top_m is not None:
+            cleared = _with_wall_remains(cleared, occupied, flat, pts[:, 2], (ny, nx),
+                                         p.wall_remains_top_m)
+        if (p.wall_trace_band_m is not None and r is not None and c is not None
+                and camera_xy is not None):
+            # the wall: the clear points and, in cleared cells, what is above furniture height
+            top = p.wall_remains_top_m if p.wall_remains_top_m is not None else p.max_height_m
+            wall = wall_continuation(pts, r, c, clear | (cleared[flat] & (pts[:, 2] > top)),
+                                     camera_xy, p.wall_trace_band_m)
+            stats["wall_points"] = int(np.count_nonzero(wall))
+            if stats["wall_points"]:
+                keep = ~wall
+                pts, r, c = np.compress(keep, pts, axis=0), r[keep], c[keep]
+                flat = flat[keep]
+                occupied = np.zeros(nx * ny, dtype=bool)
+                occupied[flat] = True
+        stats["cleared_cells"] = int(np.count_nonzero(cleared))
+        occupied[cleared] = False
+    return pts, r, c, flat, occupied
+
+
+def _touches_border(rows, cols, image_height: int | None, image_width: int | None) -> bool:
+    """Whether a sample's pixels reach the image's sides or bottom (it is cut by the view)."""
+    touches = False
+    if cols is not None and image_width:
+        margin = max(3.0, 0.01 * image_width)
+        touches = bool((cols.min() < margin) or (cols.max() > image_width - 1 - margin))
+    if rows is not None and image_height:
+        touches = touches or bool(rows.max() > image_height - 1 - max(3.0, 0.01 * image_height))
+    return touches
+
+
+def _sample(points: np.ndarray, cells: np.ndarray, height_m: float, touches: bool,
+            p: SampleParams) -> FurnitureSample:
+    """One furniture sample: its points voxel-downsampled, its floor cells (``(iy, ix)`` of the
+    sample grid) as floor-frame centres in metres."""
+    import open3d as o3d
+
+    cells_xy = np.stack([p.x_range_m[0] + (cells[:, 1] + 0.5) * p.grid_m,
+                         p.y_range_m[0] + (cells[:, 0] + 0.5) * p.grid_m], axis=1)
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    down = np.asarray(cloud.voxel_down_sample(p.voxel_m).points)
+    return FurnitureSample(down, cells_xy, height_m, touches,
+                           info={"raw_points": int(len(points)), "cells": int(len(cells))})
 
 
 #: cell size (metres) on which :func:`split_joined_items` judges a component's shape

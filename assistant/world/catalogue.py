@@ -35,14 +35,22 @@ class FurnitureModel:
         return category_word(self.category)
 
 
+#: how an object's name is said in a sentence (catalogue ``number``)
+NUMBERS = ("one", "plural", "mass")
+
+
 @dataclass(frozen=True)
 class ObjectModel:
-    """A small target object (sizes in metres)."""
+    """A small target object (sizes in metres). ``words``: other names people use for it
+    ("phone" for ``cell phone``); ``number``: ``plural`` ("the keys are"), ``mass`` ("the mail
+    is", no "a"), or ``one``."""
 
     name: str
     length_m: float
     width_m: float
     height_m: float
+    words: tuple[str, ...] = ()
+    number: str = "one"
 
 
 @dataclass(frozen=True)
@@ -90,6 +98,26 @@ class Catalogue:
         """Floor areas (m², length × width) of the models of ``category`` (empty if none)."""
         return tuple(m.length_m * m.width_m for m in self.models.values() if m.category == category)
 
+    def object_words(self) -> dict[str, str]:
+        """Every name and other word of the objects (lower case) → the object's name."""
+        out: dict[str, str] = {}
+        for obj in self.objects.values():
+            for word in obj.words:
+                out.setdefault(word, obj.name)
+        for obj in self.objects.values():  # an object's own name wins over another's word
+            out[obj.name] = obj.name
+        return out
+
+    def number(self, name: str) -> str:
+        """How an object's name is said (:data:`NUMBERS`): the catalogue's ``number`` for a
+        known object; for any other thing, ``plural`` when its name ends like a plural
+        ("scissors", "papers"), else ``one``."""
+        obj = self.objects.get(" ".join(name.lower().split()))
+        if obj is not None:
+            return obj.number
+        last = name.lower().split()[-1] if name.split() else ""
+        return "plural" if last.endswith("s") and not last.endswith(("ss", "us", "is")) else "one"
+
     def object(self, name: str) -> ObjectModel:
         try:
             return self.objects[name]
@@ -120,10 +148,14 @@ def load_catalogue() -> Catalogue:
             shape=str(spec["shape"]),
             front_offset_rad=(float(spec["front_offset"]) if "front_offset" in spec else None),
         )
-    objects = {
-        name: ObjectModel(name, float(s["length"]), float(s["width"]), float(s["height"]))
-        for name, s in data["objects"].items()
-    }
+    objects = {}
+    for name, s in data["objects"].items():
+        number = str(s.get("number", "one"))
+        if number not in NUMBERS:
+            raise DataFileError(where, f"objects.{name}.number", f"expected one of {NUMBERS}")
+        words = tuple(" ".join(str(w).lower().split()) for w in s.get("words", ()))
+        objects[name] = ObjectModel(name, float(s["length"]), float(s["width"]), float(s["height"]),
+                                    words, number)
     category_words = {name: spec["word"] for name, spec in data["categories"].items()}
     return Catalogue(models=models, objects=objects, category_words=category_words,
                      words=parse_words(data.get("words"), where))

@@ -206,6 +206,31 @@ class Floorplan:
             graph.add_edge(a, b, door=door, kind=kind, weight=weight)
         return graph
 
+    def room_faced(self, pose: Pose2D, side: str | None = None) -> str | None:
+        """The room joined to the one at ``pose`` through the passage a person standing there
+        would mean: on ``side`` (``"left"``/``"right"`` of the heading) when given, the one
+        most nearly square to that side, else the most nearly ahead (nearer passages first
+        among equals). None when ``pose`` is in no
+        room or no passage leads on (on the side said)."""
+        import math
+
+        from assistant.geometry import wrap_angle
+
+        here = self.room_at(pose.x, pose.y)
+        if here is None:
+            return None
+        graph = self.room_graph()
+        options = []
+        for other in graph.neighbors(here.name):
+            door = graph.edges[here.name, other]["door"]
+            dx, dy = door.centre[0] - pose.x, door.centre[1] - pose.y
+            bearing = wrap_angle(math.atan2(dy, dx) - pose.theta)
+            if (side == "left" and bearing <= 0.0) or (side == "right" and bearing >= 0.0):
+                continue
+            want = {"left": math.pi / 2, "right": -math.pi / 2}.get(side, 0.0)
+            options.append((abs(bearing - want) + 0.1 * math.hypot(dx, dy), other))
+        return min(options)[1] if options else None
+
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of rooms and walls, metres."""
         pts = [r.polygon_array for r in self.rooms] + [w.polygon_array for w in self.walls]

@@ -37,9 +37,9 @@ class _StandInParser:
 
 @pytest.fixture(autouse=True)
 def _stand_in_parser(monkeypatch):
-    from assistant.executor import trial
+    from assistant.app import Fetcher
 
-    monkeypatch.setattr(trial.FetchRunner, "parser", lambda self, world: _StandInParser())
+    monkeypatch.setattr(Fetcher, "parser", lambda self, world: _StandInParser())
 
 
 def _main(argv):

@@ -5,7 +5,18 @@ import time
 
 import pytest
 
-from assistant.dialogue import DialogueManager, FetchReport, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory, Services
+
+
+def fetch_result(success: bool, furniture: str, obj: str = "mug", seen_objects=(), perceived=None):
+    """A fetch's application-layer result as the stand-in fetchers report it."""
+    from assistant.app import Result, Status
+
+    data = {"success": success, "failure": None if success else "not_visible", "final_pose": [1.0, 2.0, 0.0],
+            "executor": {"status": "success", "message": "facing the table",
+                         "target_furniture": {"id": furniture, "name": "table", "centre": [0, 0]}}}
+    return Result("fetch", Status.SUCCESS if success else Status.NOT_VISIBLE, "facing the table", data,
+                  seen=list(seen_objects), furniture=perceived, object=obj, object_seen=success)
 
 
 class StandInFetcher:
@@ -22,9 +33,7 @@ class StandInFetcher:
         while self.hold:
             time.sleep(0.01)
             on_event("move_to", {"goal": None})
-        return FetchReport(True if self.seen else False, None if self.seen else "not_visible", "facing the table",
-                           [1.0, 2.0, 0.0], {"id": self.furniture, "name": "table", "centre": [0, 0]},
-                           "mug", self.seen)
+        return fetch_result(bool(self.seen), self.furniture)
 
 
 @pytest.fixture(scope="module")
@@ -37,7 +46,7 @@ def services():
 
 
 def make(services, tmp_path, fetcher, said=None):
-    services._fetcher = fetcher
+    services = services.using(fetcher=fetcher)
     return DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"),
                            say=(said.append if said is not None else None))
 
@@ -82,8 +91,14 @@ def test_clarify_never_mind_and_ordinals(services, tmp_path):
     m.handle("get the statue from the table in the bedroom")
     assert m.handle("never mind").outcome == "cancelled"
     assert m.pending is None
+    asked = m.handle("get the statue from the table in the bedroom")
+    options = [o["id"] for o in asked.data["options"]]
+    assert sorted(options) == ["coffeetable_2", "hexagontable_1", "roundtable_2"]
+    # the second one offered, not just any table of the bedroom
+    assert m.handle("the second").data["chosen"] == options[1]
+    m.wait(10)
     m.handle("get the statue from the table in the bedroom")
-    assert m.handle("the second").data["chosen"] in {"roundtable_2", "coffeetable_2", "hexagontable_1"}
+    assert m.handle("the last one").data["chosen"] == options[-1]
     m.wait(10)
 
 
@@ -106,17 +121,17 @@ def test_missing_room_is_asked(services, tmp_path):
 
 def test_where_without_memory_says_it_is_the_simulators_knowledge(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
-    services.search_mode = "oracle"
+    m.services.search_mode = "oracle"
     try:
         turn = m.handle("where is my glasses case")
     finally:
-        services.search_mode = "sensed"
+        m.services.search_mode = "sensed"
     assert turn.data["source"] == "simulator" and "simulator" in turn.reply
-    services.search_mode = "oracle"
+    m.services.search_mode = "oracle"
     try:
         dyn = m.handle("how do I get to my fork?")
     finally:
-        services.search_mode = "sensed"
+        m.services.search_mode = "sensed"
     assert dyn.data["style"] == "dynamic" and dyn.reply.lower().startswith("go into the living room")
 
 

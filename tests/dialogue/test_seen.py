@@ -7,7 +7,18 @@ import time
 
 import pytest
 
-from assistant.dialogue import DialogueManager, FetchReport, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory, Services
+
+
+def fetch_result(success: bool, furniture: str, obj: str = "mug", seen_objects=(), perceived=None):
+    """A fetch's application-layer result as the stand-in fetchers report it."""
+    from assistant.app import Result, Status
+
+    data = {"success": success, "failure": None if success else "not_visible", "final_pose": [1.0, 2.0, 0.0],
+            "executor": {"status": "success", "message": "facing the table",
+                         "target_furniture": {"id": furniture, "name": "table", "centre": [0, 0]}}}
+    return Result("fetch", Status.SUCCESS if success else Status.NOT_VISIBLE, "facing the table", data,
+                  seen=list(seen_objects), furniture=perceived, object=obj, object_seen=success)
 from assistant.dialogue.seen import SeenRecorder
 from assistant.executor.sightings import place_sightings
 from assistant.geometry import Pose2D
@@ -86,9 +97,7 @@ class SeeingFetcher:
         for name, x, y in self.seen_on_way:
             on_event("objects_seen", {"seen": [placed(self.world, self.furniture, name, x, y)],
                                       "pose": Pose2D(0.0, 0.0, 0.0)})
-        return FetchReport(self.target_in_view, None if self.target_in_view else "not_visible", "facing the table",
-                           [1.0, 2.0, 0.0], {"id": self.target_furniture, "name": "table", "centre": [0, 0]},
-                           "mug", self.target_in_view, furniture=self.furniture)
+        return fetch_result(self.target_in_view, self.target_furniture, perceived=self.furniture)
 
 
 class StandInSearcher:
@@ -118,8 +127,7 @@ class StandInSearcher:
 
 
 def manager(services, tmp_path, fetcher=None, searcher=None, said=None):
-    services._fetcher = fetcher
-    services._searcher = searcher
+    services = services.using(fetcher=fetcher, searcher=searcher)
     services.search_mode = "sensed"
     return DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"),
                            say=(said.append if said is not None else None))

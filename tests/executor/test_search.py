@@ -5,7 +5,10 @@ from __future__ import annotations
 import pytest
 
 from assistant.executor.outcome import ExecutionStatus
-from assistant.executor.search import room_order, search_for
+from assistant.executor.context import TaskContext
+from assistant.executor.search import SEARCH_BUDGET_S, SearchTask, room_order
+from assistant.executor.sensing import SensedFurniture
+from assistant.perception.objects import SimObjectDetector
 from assistant.perception.objects import Sighting
 from assistant.world import load_world
 
@@ -15,6 +18,18 @@ def furniture_detector():
     from assistant.perception import FurnitureDetector
 
     return FurnitureDetector()
+
+
+def search_for(name, world, scene, furniture_detector, on_event=None, **params):
+    """The search task with the simulator (odometry noise on), sensed furniture and the
+    simulator's object detector, from the world's start."""
+    from assistant.sim import OdometryNoise, SimRobot
+
+    world = load_world(world) if isinstance(world, str) else world
+    with SimRobot(world, scene, seed=0, odometry_noise=OdometryNoise()) as robot:
+        ctx = TaskContext.start(world, robot, SensedFurniture(world, detector=furniture_detector),
+                                max_sim_seconds=SEARCH_BUDGET_S, on_event=on_event)
+        return SearchTask(SimObjectDetector.for_scene(world.scene(scene)), **params).run(ctx, name)
 
 
 @pytest.fixture(scope="module")
@@ -27,10 +42,13 @@ def describer():
 def test_rooms_are_ordered_from_the_start_room_then_nearest():
     world = load_world("apartment")
     order = room_order(world, "hallway")
-    assert order[0] == "hallway"
     assert sorted(order) == sorted(world.floorplan.room_names)
     # the bedroom's door is nearer the hallway than the living room's far side
-    assert room_order(world, "bedroom")[0] == "bedroom"
+    assert order == ["hallway", "bedroom", "living room"]
+    # from the bedroom the living room is reached through the hallway: the hallway comes next
+    assert room_order(world, "bedroom") == ["bedroom", "hallway", "living room"]
+    # no start room: the room whose centre is nearest the start point
+    assert room_order(world, None, (4.0, 4.0))[0] == "living room"
 
 
 def test_search_finds_the_object_and_reports_what_it_sees(furniture_detector):

@@ -42,14 +42,22 @@ def test_fit_counts_texts_cooccurrence_and_relations(tiny_corpus):
     assert model.relation("ORMTP", "OBTP", "dynamic")[0] == "NL"
 
 
-def test_fit_is_deterministic_and_cached(tiny_corpus):
+def test_fit_is_deterministic_and_cached(tiny_corpus, tmp_path, monkeypatch):
+    monkeypatch.setenv("ASSISTANT_CACHE", str(tmp_path / "cache"))
     a = load_generation_model(tiny_corpus, use_cache=False)
     b = load_generation_model(tiny_corpus, use_cache=False)
     assert pickle.dumps(a.templates_) == pickle.dumps(b.templates_)
     assert a.pair_counts_ == b.pair_counts_
+    assert not list((tmp_path / "cache").glob("generation-*.pkl"))  # use_cache=False writes nothing
     c = load_generation_model(tiny_corpus)          # writes the cache
-    d = load_generation_model(tiny_corpus)          # reads it
-    assert c.templates_ == d.templates_
+    assert len(list((tmp_path / "cache").glob("generation-*.pkl"))) == 1
+
+    def refit(self, *args, **kwargs):
+        raise AssertionError("fitted again instead of reading the cache")
+
+    monkeypatch.setattr(GenerationModel, "fit", refit)
+    d = load_generation_model(tiny_corpus)          # reads it (fitting would raise)
+    assert d is not c and d.templates_ == c.templates_ and d.pair_counts_ == c.pair_counts_
 
 
 def test_unfitted_model_says_so():

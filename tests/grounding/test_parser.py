@@ -56,9 +56,19 @@ def test_bad_input_never_raises_and_is_flagged(parser, text, flag):
 
 
 def test_unknown_word_is_listed_in_unused(parser):
-    result = parser.parse("the mug is on the table by the flurbostat")
-    assert "flurbostat" in result.plan.unused and "unused_words" in result.plan.flags
+    result = parser.parse("the mug is on the table zorpily by the bed")
+    assert "zorpily" in result.plan.unused and "unused_words" in result.plan.flags
     assert result.plan.object == "mug"
+
+
+def test_any_thing_can_be_the_object_or_a_landmark(parser):
+    # open vocabulary: a thing nobody taught the robot is still a thing said (dissertation
+    # homes had six objects; people ask about any)
+    result = parser.parse("the mug is on the table by the flurbostat")
+    assert result.plan.object == "mug" and "flurbostat" not in result.plan.unused
+    assert ("flurbostat", "beside") in result.plan.nodes[-1].pairs
+    assert parser.parse("the flurbostat is on the table by the bed").plan.object == "flurbostat"
+    assert parser.parse("the keys are on the table by the bed").plan.object == "keys"
 
 
 def test_too_long_a_command_is_refused_with_a_reason(parser):

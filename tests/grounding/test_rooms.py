@@ -68,3 +68,20 @@ def test_a_room_named_only_in_a_place_phrase_is_the_target_room(language, corpus
     parser = CommandParser(language, fitted, all_worlds["hk-studio"])
     plan = parser.parse("The laptop is on the big table in the middle of the meeting room.").plan
     assert plan.room == "meeting room" and plan.object == "laptop"
+
+
+def test_the_room_on_a_side_comes_from_the_floor_plan():
+    from assistant.grounding.rooms import side_room_groundings
+    from assistant.grounding.types import ChunkGrounding, ChunkRecord
+    from assistant.world import load_world
+
+    records = [ChunkRecord("ORMTP", ("go", "into", "the", "room", "on", "your", "right"),
+                           ("VB", "IN", "DT", "RM", "ON", "PRP", "DIR"))]
+    guess = [ChunkGrounding(room="bedroom")]
+    # one-bedroom-house: the living room opens on the right of the start, the office on the left
+    assert side_room_groundings(records, guess, load_world("one-bedroom-house"))[0].room == "living room"
+    assert side_room_groundings(records, guess, load_world("apartment"))[0].room == "living room"
+    # said after a move elsewhere ("the end of the hallway"), the words alone cannot tell
+    before = [ChunkRecord("ORMTP", ("go", "to", "the", "end", "of", "the", "hall"), ("VB",) * 7)]
+    assert side_room_groundings(before + records, [ChunkGrounding()] + guess,
+                                load_world("one-bedroom-house"))[1].room == "bedroom"

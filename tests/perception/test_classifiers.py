@@ -85,3 +85,15 @@ def test_unknown_classifier_is_named():
 
     with pytest.raises(UnknownNameError, match="gsvm"):
         FurnitureClassifier("knn").fit(*toy(n=5))
+
+
+def test_the_verifier_overrules_a_bed_or_couch_only_with_the_side_cue_agreeing():
+    from assistant.perception.classifiers import verified_category
+
+    assert verified_category("bed", "large table", solid=0.3, open_=0.42) == "large table"  # knee space
+    assert verified_category("couch", "large table", solid=0.5, open_=0.23) == "couch"  # no knee space seen
+    assert verified_category("couch", "other", solid=0.9, open_=0.0) == "other"  # a closed box: a bench
+    assert verified_category("bed", "other", solid=0.0, open_=1.0) == "bed"  # not closed: keep the bed
+    assert verified_category("couch", "small table", solid=0.86, open_=0.07) == "small table"
+    assert verified_category("chair", "other", solid=1.0, open_=0.0) == "chair"  # only beds and couches
+    assert verified_category("bed", "couch", solid=1.0, open_=0.0) == "bed"

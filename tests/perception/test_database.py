@@ -10,13 +10,14 @@ from assistant.perception.database import (
     render_database,
     study_items,
 )
+from assistant.perception.features import SHAPE_LENGTH
 from assistant.perception.instances import instance_mesh, load_instances
 
 
 def test_tiny_database_is_labelled(tiny_database):
     db = tiny_database
     assert len(db) >= 28  # 4 items × 8 views, a few may be missed
-    assert db.X.shape[1] == 800 and db.S.shape[1] == 49 and db.Q.shape == db.X.shape
+    assert db.X.shape[1] == 800 and db.S.shape[1] == SHAPE_LENGTH == 51 and db.Q.shape == db.X.shape
     assert set(db.category) == {"chair", "couch", "small table", "bed"}
     tables = db.category == "small table"
     assert np.isnan(db.facing[tables]).all() and np.isfinite(db.facing[~tables]).all()

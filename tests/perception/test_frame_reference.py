@@ -73,7 +73,8 @@ def assert_same_analysis(new, old, ref):
         err = np.minimum(np.abs(a.normals - b.normals).max(axis=1), np.abs(a.normals + b.normals).max(axis=1))
         normals_same += int((err < 1e-6).sum())
         normals_all += len(err)
-        assert np.allclose(shape_descriptor(a.points, a.normals),
+        # the old code's 49 values (the side cues of issue 20 came later)
+        assert np.allclose(shape_descriptor(a.points, a.normals)[:49],
                            ref.features.shape_descriptor(b.points, b.normals), atol=0.02)
     if normals_all:
         assert normals_same >= 0.98 * normals_all

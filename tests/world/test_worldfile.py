@@ -25,9 +25,15 @@ def test_study_home_has_both_scenes_and_passes_checks(name):
     world = load_world(name)
     assert {"original", "modified"} <= set(world.scenes)
     assert check_world(world) == []
-    for scene in world.scenes.values():
+    study = {"fork", "glasses case", "laptop", "monitor", "mug", "statue"}
+    for scene in (world.scene("original"), world.scene("modified")):  # as the dissertation has them
         assert len(scene.objects) == 6
-        assert {o.name for o in scene.objects} == {"fork", "glasses case", "laptop", "monitor", "mug", "statue"}
+        assert {o.name for o in scene.objects} == study
+    # the lived-in scene: the original furniture, the study's objects and everyday things
+    lived = world.scene("lived-in")
+    assert lived.furniture == world.scene("original").furniture
+    assert study < {o.name for o in lived.objects}
+    assert {"keys", "wallet", "cell phone", "book", "remote"} <= {o.name for o in lived.objects}
 
 
 @pytest.mark.parametrize("name", STUDY_HOMES)

@@ -369,7 +369,7 @@ def build(rng: random.Random, scale: float = SCALE) -> list[dict]:
                              "family": family, "kind": kind, "landmark": landmark}
                     if add(tree, attrs, ctx):
                         made += 1
-    for hw in read_handwritten(HERE / "handwritten.txt"):
+    for hw in read_handwritten(HERE / "handwritten.txt") + read_handwritten(HERE / "spoken.txt"):
         add(hw["tree"], hw["attrs"], hw["ctx"])
     for i, d in enumerate(out, 1):
         d["attrs"]["id"] = f"d{i:04d}"
@@ -377,7 +377,9 @@ def build(rng: random.Random, scale: float = SCALE) -> list[dict]:
 
 
 def read_handwritten(path: Path) -> list[dict]:
-    """Hand-written descriptions: ``world | object | kind-landmark | notation`` per line."""
+    """Hand-written descriptions: ``world | object | kind-landmark | notation`` per line, or
+    ``world | object @ room | kind-landmark | notation`` for an object the home facts do not
+    place (``keys @ bedroom``)."""
     out = []
     for lineno, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
         line = line.strip()
@@ -387,7 +389,10 @@ def read_handwritten(path: Path) -> list[dict]:
             world, obj, family, text = (p.strip() for p in line.split("|", 3))
         except ValueError:
             raise SystemExit(f"{path}:{lineno}: need 'world | object | family | notation'")
-        room = H.HOMES[world]["objects"][obj]["room"]
+        if "@" in obj:
+            obj, room = (p.strip() for p in obj.split("@", 1))
+        else:
+            room = H.HOMES[world]["objects"][obj]["room"]
         tree = parse(text)
         kind, landmark = family.split("-")
         out.append({"tree": tree, "ctx": {"room": room, "object": obj},

@@ -211,6 +211,8 @@ def ground_irmrp(words: list[Word]) -> tuple[str, str]:
     if d:
         if low & _MOTION_VERBS and not low & {"on", "to", "at"}:
             return "move", d
+        if "room" in low and not low & {"you", "your", "his", "brian"}:
+            return "room", d  # "on the right side of the room": the room's side, not the listener's
         return "robot", d
     if "behind" in low:
         return "robot", "back"
@@ -237,6 +239,40 @@ def ground_furrp(words: list[Word]) -> tuple[str, str]:
     return ref, "beside"
 
 
+#: words that alone (with fillers) tell the robot to stop
+STOP_ONLY = {"stop", "halt", "there", "here", "and", "then", "now", "right", "just", "okay", "ok", "um", "uh"}
+_OBJECT_TAGS = {"NN", "NNS", "FUR"}
+
+
+def ground_obrp(words: list[Word]) -> tuple[str, str]:
+    """(reference, direction) of an object reference phrase ("by the lamp" → lamp, beside): the
+    object is the run of nouns said last; "N/A" when it names none ("next to it")."""
+    nouns: list[str] = []
+    run: list[str] = []
+    for w in words:
+        if w.tag in _OBJECT_TAGS and w.text.lower() not in FURNITURE_CATEGORY:
+            run.append(w.text.lower())
+        else:
+            if run:
+                nouns = run
+            run = []
+    nouns = run or nouns
+    if not nouns:
+        return NA, NA
+    ref = " ".join(nouns)
+    low = {w.text.lower() for w in words}
+    dirs = _dir_words(words)
+    if dirs:
+        return ref, dirs[-1]
+    if "behind" in low:
+        return ref, "back"
+    if low & {"front"}:
+        return ref, "front"
+    if "between" in low:
+        return ref, "between"
+    return ref, "beside"
+
+
 def ground_chunk(node: Node, ctx: dict, has_ormrp_child: bool) -> dict:
     """The five grounding fields of one chunk (``N/A`` where none)."""
     g = {f: NA for f in GROUNDING_FIELDS}
@@ -255,7 +291,17 @@ def ground_chunk(node: Node, ctx: dict, has_ormrp_child: bool) -> dict:
         if {w.text.lower() for w in own} & OBJECT_WORDS.get(ctx["object"], {ctx["object"]}):
             g["target object"] = ctx["object"]
     elif lab == "IRMRP":
-        g["reference"], g["direction"] = ground_irmrp(own)
+        low = {w.text.lower() for w in own}
+        if low <= STOP_ONLY and low & {"stop", "halt"}:
+            g["reference"] = "stop"
+        else:
+            g["reference"], g["direction"] = ground_irmrp(own)
+    elif lab == "OBRP":
+        g["reference"], g["direction"] = ground_obrp(own)
+    elif lab == "PERS":
+        dirs = _dir_words(own)
+        if dirs:
+            g["reference"], g["direction"] = "robot", dirs[-1]
     elif lab == "FURTP":
         g["target"] = _furniture(own) or "table"
     elif lab == "FURRP":

@@ -1,0 +1,42 @@
+"""One exchange of a conversation (:class:`Turn`), the help text, and joining words."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+__all__ = ["HELP_TEXT", "NUMBER_WORDS", "Turn", "join_words"]
+
+NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
+HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
+             "in the living room\"), ask where something is (\"where is my mug?\", \"have you seen my "
+             "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
+             "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
+             "\"repeat that\", \"which home am I in\" or \"start over\".")
+
+
+@dataclass
+class Turn:
+    """One exchange: what was said, the intent, the robot's reply, what it did and how it ended.
+
+    ``action``: ``answer``, ``describe``, ``fetch``, ``search``, ``clarify``, ``teach``, ``stop``, ``none``;
+    ``outcome``: ``answered``, ``asked``, ``started``, ``success``, ``failed``, ``stopped``,
+    ``cancelled``, ``not_understood``, ``busy``; ``seconds``: time to the reply (wall clock).
+    """
+
+    text: str
+    intent: str
+    reply: str
+    action: str = "none"
+    outcome: str = "answered"
+    data: dict = field(default_factory=dict)
+    seconds: float = 0.0
+    final: bool = True  # False for a started fetch: a final Turn follows from the worker
+
+    def to_dict(self) -> dict:
+        return {"text": self.text, "intent": self.intent, "reply": self.reply, "action": self.action,
+                "outcome": self.outcome, "data": self.data, "seconds": round(self.seconds, 4)}
+
+
+def join_words(words: list[str], last: str = "and") -> str:
+    """"a", "a and b", "a, b and c" (``last`` instead of "and")."""
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {last} " + words[-1]

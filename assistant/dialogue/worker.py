@@ -1,0 +1,183 @@
+"""Running the conversation's robot tasks: one fetch or search at a time, in a worker thread.
+
+A task takes the simulator seconds to minutes, so :meth:`TaskWorker.start` returns at once;
+the worker speaks its progress through the conversation's ``say``, records every object the
+robot sees into the memory (:class:`~assistant.dialogue.seen.SeenRecorder`), and ends with a
+final :class:`~assistant.dialogue.turns.Turn` (composed by :mod:`assistant.dialogue.replies`).
+"stop" sets the job's flag: the application layer stops the robot at its next call and the
+task ends ``stopped``.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass
+
+from assistant.app import Status, Stopped
+from assistant.dialogue.clarify import progress_sentence
+from assistant.dialogue.replies import ReplyContext, fetch_reply, search_reply
+from assistant.dialogue.seen import SeenRecorder
+from assistant.dialogue.turns import Turn
+
+__all__ = ["Job", "TaskWorker"]
+
+
+@dataclass
+class Job:
+    """One task (``fetch`` or ``search``) in its worker thread."""
+
+    stop: threading.Event
+    thread: threading.Thread | None = None
+    final: Turn | None = None
+    kind: str = "fetch"
+
+
+class TaskWorker:
+    """Runs the tasks of ``conversation`` (a :class:`~assistant.dialogue.DialogueManager`:
+    its ``world``, ``scene``, ``services``, ``memory``, ``say``, ``on_event``, ``on_pose`` and
+    ``on_finish``; final turns go to its ``history`` and questions they leave to ``pending``)."""
+
+    def __init__(self, conversation):
+        self.conversation = conversation
+        self.job: Job | None = None
+
+    @property
+    def busy(self) -> bool:
+        """A task is running and has not been asked to stop."""
+        job = self.job
+        return job is not None and job.thread.is_alive() and not job.stop.is_set()
+
+    def stop(self) -> bool:
+        """Ask the running task to stop; True when one was running."""
+        if self.busy:
+            self.job.stop.set()
+            return True
+        return False
+
+    def wait(self, timeout: float | None = None) -> Turn | None:
+        """The last task's final turn once it has ended (None if none ran or it still runs)."""
+        job = self.job
+        if job is None:
+            return None
+        job.thread.join(timeout)
+        return None if job.thread.is_alive() else job.final
+
+    def close(self, timeout: float = 10.0) -> None:
+        if self.job is not None:
+            self.job.stop.set()
+            self.job.thread.join(timeout)
+
+    def start(self, kind: str, text: str, room: str | None, obj: str | None, style: str = "static") -> None:
+        """Run a fetch (``text``: the command) or a search (``text``: the object) in a thread."""
+        previous = self.job
+        job = Job(threading.Event(), kind=kind)
+        job.thread = threading.Thread(target=self._run, args=(job, previous, text, room, obj, style),
+                                      name=f"assistant-{kind}", daemon=True)
+        self.job = job
+        job.thread.start()
+
+    # ------------------------------------------------------------------ in the thread
+    def speak(self, sentence: str) -> None:
+        c = self.conversation
+        c.last_said = sentence
+        try:
+            c.say(sentence)
+        except Exception:  # a front end's problem must not kill the task
+            pass
+
+    def _events(self, job: Job, recorder: SeenRecorder, obj: str | None):
+        """The task's event callback: the front end's view, memory, spoken progress; raises
+        :class:`~assistant.app.Stopped` once the job is asked to stop."""
+        c = self.conversation
+        words = {f.id: f.word for f in c.world.scene(c.scene).furniture}
+        announced: set[str] = set()
+
+        def on_event(name: str, data: dict) -> None:
+            if job.stop.is_set():
+                raise Stopped()
+            if c.on_event is not None:
+                try:
+                    c.on_event(name, data)
+                except Exception:  # drawing is a courtesy
+                    pass
+            if name == "objects_seen":
+                recorder.on_event(name, data)
+                if job.kind == "search" and obj and obj in recorder.latest and obj not in announced:
+                    announced.add(obj)
+                    self.speak(f"I can see your {obj}!")
+            sentence = progress_sentence(name, data, words)
+            if sentence:
+                self.speak(sentence)
+            if job.stop.is_set():
+                raise Stopped()
+
+        return on_event
+
+    def _run(self, job: Job, previous: Job | None, text: str, room: str | None, obj: str | None,
+             style: str = "static") -> None:
+        c = self.conversation
+        start = time.perf_counter()
+        if previous is not None:  # a stopped task winds down at its robot's next call
+            previous.thread.join(30.0)
+        recorder = SeenRecorder(c.memory, c.world.name, source=job.kind)
+        before = c.memory.recall(c.world.name, obj) if obj else None
+        on_event = self._events(job, recorder, obj)
+        try:
+            if job.kind == "search":
+                result = c.services.search(text, c.world, c.scene, on_event, stop=job.stop, on_pose=c.on_pose,
+                                           style=style)
+            else:
+                result = c.services.fetch(text, c.world.name, c.scene, on_event, stop=job.stop, on_pose=c.on_pose)
+        except Stopped:
+            final = self._stopped(job, text, recorder, None, start)
+        except Exception as error:  # noqa: BLE001 — any failure of the task becomes a reply, the chat goes on
+            self._remember_seen(recorder, None)
+            final = Turn(text, "command", f"Sorry, I couldn't do that ({error}).", job.kind, "failed",
+                         {"command": text}, time.perf_counter() - start)
+        else:
+            final = self._final(job, text, result, recorder, obj, before, start)
+        job.final = final
+        c.history.append(final)
+        self.speak(final.reply)
+        if c.on_finish is not None:
+            try:
+                c.on_finish(final)
+            except Exception:  # a front end's problem must not kill the worker
+                pass
+
+    def _final(self, job: Job, text: str, result, recorder, obj, before, start: float) -> Turn:
+        c = self.conversation
+        try:
+            if job.stop.is_set() or result.status is Status.STOPPED:
+                return self._stopped(job, text, recorder, result.furniture, start)
+            if job.kind == "search":  # where it was found
+                found = getattr(result.task, "sighting", None)
+                recorder.add([found] if result.success and found is not None else [])
+            else:  # the final view's sightings too
+                recorder.add(list(result.seen or []))
+            summary = self._remember_seen(recorder, result.furniture)
+            ctx = ReplyContext(c.world, c.scene, c.memory, c.services)
+            if job.kind == "search":
+                return search_reply(ctx, text, result, summary, start)
+            turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before)
+            if pending is not None:
+                c.pending = pending
+            return turn
+        except Exception as error:  # a bug here must still end the task with a reply
+            return Turn(text, "error", f"Sorry, something went wrong inside me after the {job.kind} "
+                        f"({type(error).__name__}: {error}).", job.kind, "failed", {"command": text},
+                        time.perf_counter() - start)
+
+    def _stopped(self, job: Job, text: str, recorder, furniture, start: float) -> Turn:
+        summary = self._remember_seen(recorder, furniture)
+        return Turn(text, "command", "I've stopped.", job.kind, "stopped",
+                    {"command": text, "seen": summary["seen"]}, time.perf_counter() - start)
+
+    def _remember_seen(self, recorder, furniture) -> dict:
+        """Write what the task saw to memory (phrases composed from the perceived furniture)."""
+        c = self.conversation
+        try:
+            return recorder.finish(furniture, c.services.describer, c.world.floorplan)
+        except Exception as error:  # memory must not turn a finished task into a crash
+            return {"seen": sorted(recorder.latest), "moved": [], "places": {}, "problem": str(error)}

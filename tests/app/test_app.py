@@ -1,0 +1,109 @@
+"""The application layer: one result type, robots from any spec, fetch and "where is" assembled
+once. The language layers are replaced by a stand-in parser and the furniture read from the
+world file (oracle) so that the runs stay short; `assistant eval fetch|generation` measure the
+real thing."""
+
+from __future__ import annotations
+
+import argparse
+import threading
+
+import pytest
+
+from assistant.app import Fetcher, Finder, Result, Status, open_robot, spec_world
+from assistant.errors import AssistantError, UnknownNameError
+from assistant.grounding import GroundingPlan, RDTNode
+
+TEXT = "the glasses case is on the table in front of the couch in the living room"
+
+
+class _Parsed:
+    def __init__(self, plan):
+        self.plan = plan
+
+
+class _StandInParser:
+    def parse(self, text):
+        if text == TEXT:
+            return _Parsed(GroundingPlan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case"))
+        return _Parsed(GroundingPlan())
+
+
+@pytest.fixture(scope="module")
+def fetcher():
+    from assistant.policy.library import PolicyLibrary
+
+    return Fetcher(parser=_StandInParser(), policies=PolicyLibrary())
+
+
+def test_a_result_says_success_or_why_not():
+    ok = Result("fetch", Status.SUCCESS, "facing the table", {"success": True})
+    assert ok.success and ok.failure is None and ok.to_dict() == {"success": True}
+    failed = Result("where", Status.NOT_FOUND, "I looked in the bedroom and did not find a stapler.")
+    assert not failed.success and failed.failure == "not_found"
+    assert Status("stopped") is Status.STOPPED  # one enum for tasks and use cases
+
+
+def test_robot_specs_name_their_home_and_unknown_kinds_are_refused(apartment):
+    assert spec_world("sim") is None and spec_world("sim:hk-studio:modified") == "hk-studio"
+    with pytest.raises(UnknownNameError, match="robot kind.*p3dx.*replay.*sim"):
+        spec_world("roomba:1")
+    with pytest.raises(AssistantError, match="hk-studio home but the task is in the apartment"):
+        open_robot("sim:hk-studio", apartment, "original")
+    robot = open_robot("sim:apartment:modified", apartment, "original", noise=False)
+    assert robot.world is apartment and robot.scene == "modified"
+
+
+def test_the_command_line_refuses_an_unknown_robot_kind(capsys):
+    from assistant.cli.common import add_robot_option
+
+    parser = argparse.ArgumentParser(prog="assistant chat")
+    add_robot_option(parser)
+    assert parser.parse_args(["--robot", "sim:apartment"]).robot == "sim:apartment"
+    with pytest.raises(SystemExit):
+        parser.parse_args(["--robot", "roomba"])
+    assert "unknown robot kind 'roomba'" in capsys.readouterr().err.lower()
+
+
+def test_fetch_ends_in_one_result_with_the_contract_fields(fetcher, apartment):
+    result = fetcher.fetch(TEXT, apartment, "original", "oracle")
+    assert result.kind == "fetch" and result.success and result.status is Status.SUCCESS
+    data = result.to_dict()
+    assert {"plan", "success", "failure", "final_pose", "target_visible", "sim_seconds", "wall_seconds"} <= set(data)
+    assert data["executor"]["target_furniture"]["id"] == "coffeetable_1" and data["robot"] == "sim"
+    assert result.object == "glasses case" and result.object_seen
+    assert result.task.success and result.furniture  # the executor's report and the perceived furniture
+
+
+def test_a_failed_fetch_says_why(fetcher, apartment):
+    result = fetcher.fetch("go dance", apartment, "original", "oracle")
+    assert result.status is Status.PARSE and result.failure == "parse" and not result.data["success"]
+
+
+def test_a_stopped_fetch_ends_stopped_at_once(fetcher, apartment):
+    stop = threading.Event()
+    stop.set()
+    result = fetcher.fetch(TEXT, apartment, "original", "oracle", stop=stop)
+    assert result.status is Status.STOPPED and result.task is None and not result.success
+    assert result.data["plan"]["object"] == "glasses case" and result.furniture is not None
+
+
+def test_where_is_from_the_world_file(apartment):
+    finder = Finder()
+    found = finder.where_is("glasses case", apartment, search="oracle")
+    assert found.kind == "where" and found.success and "glasses case" in found.message
+    assert {"found", "description", "nodes", "seen_at"} <= set(found.to_dict())
+    assert found.description.environment == "oracle"
+    with pytest.raises(UnknownNameError):
+        finder.where_is("unicorn", apartment, search="oracle")
+
+
+def test_where_is_from_a_remembered_place(apartment):
+    from assistant.perception.objects import Sighting
+
+    finder = Finder()
+    coffee = next(f for f in apartment.scene("original").furniture if f.id == "coffeetable_1")
+    remembered = Sighting("mug", coffee.x, coffee.y, 0.7, room="living room")
+    result = finder.where_is("mug", apartment, remembered=remembered)
+    assert result.success and result.message.lower().startswith("the mug")
+    assert result.to_dict()["seen_at"]["x"] == pytest.approx(coffee.x)
