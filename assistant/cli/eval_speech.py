@@ -20,6 +20,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--clean-only", action="store_true", help="no noisy copies")
     parser.add_argument("--no-open", action="store_true", help="pocketsphinx: no general-English fallback")
     parser.add_argument("--rows", action="store_true", help="print every utterance")
+    parser.add_argument("--shard", metavar="I/N", default="1/1",
+                        help="only every N-th utterance from the I-th: run N processes in parallel, each "
+                             "with --json to a file, then join them with --merge")
+    parser.add_argument("--merge", nargs="+", metavar="REPORT.json",
+                        help="print one report joined from the --json reports of the shards of one run")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -29,9 +34,13 @@ def run(args: argparse.Namespace) -> int:
         from assistant.errors import AssistantError
 
         raise AssistantError("--asr-model is the folder of a vosk model: add --asr vosk")
-    report = evaluate_speech(args.asr, args.asr_model, quick=args.quick, all_voices=args.all_voices,
-                             kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
-                             open_fallback=not args.no_open, progress=progress_for(args))
+    if args.merge:
+        report = _merged(args.merge)
+    else:
+        report = evaluate_speech(args.asr, args.asr_model, quick=args.quick, all_voices=args.all_voices,
+                                 kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
+                                 open_fallback=not args.no_open, shard=_shard(args.shard),
+                                 progress=progress_for(args))
     if args.json:
         emit_json(report)
         return 0
@@ -54,3 +63,33 @@ def run(args: argparse.Namespace) -> int:
           f"{percent(s['plan_equal'])} of {s['planned']}, RTF {s['real_time_factor']}, open model used "
           f"{s['open_used']}x; {report['wall_seconds']} s")
     return 0
+
+
+def _shard(text: str) -> tuple[int, int]:
+    from assistant.errors import AssistantError
+
+    try:
+        i, n = (int(p) for p in text.split("/"))
+    except ValueError:
+        raise AssistantError(f"--shard {text}: expected I/N, e.g. 2/4") from None
+    if not 1 <= i <= n:
+        raise AssistantError(f"--shard {text}: I must be between 1 and N")
+    return i, n
+
+
+def _merged(paths) -> dict:
+    import json
+
+    from assistant.errors import AssistantError
+    from assistant.eval.speech import merge_reports
+
+    reports = []
+    for path in paths:
+        try:
+            with open(path, encoding="utf-8") as handle:
+                reports.append(json.loads(handle.read()))
+        except (OSError, ValueError) as error:
+            raise AssistantError(f"--merge {path}: not a report of assistant eval speech --json ({error})") from None
+        if "rows" not in reports[-1]:
+            raise AssistantError(f"--merge {path}: has no rows; write it with assistant eval speech --json")
+    return merge_reports(reports)

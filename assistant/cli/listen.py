@@ -25,7 +25,6 @@ def register(subparsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from assistant.dialogue.speech.errors import SpeechError
     from assistant.dialogue.speech.listener import Listener
     from assistant.grounding import CommandParser
 
@@ -44,7 +43,15 @@ def run(args: argparse.Namespace) -> int:
     elif args.asr_model:
         options = {"asr_model": args.asr_model}
     listener = Listener(args.asr, **options)
-    parser = CommandParser.load(None, world=world)
+    try:
+        return _listen(args, listener, CommandParser.load(None, world=world))
+    finally:
+        listener.recogniser.close()
+
+
+def _listen(args, listener, parser) -> int:
+    from assistant.dialogue.speech.errors import SpeechError
+
     status = 0
     single = len(args.files) == 1
     for path in args.files:

@@ -61,8 +61,10 @@ class _Parsers:
 
 def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = False, all_voices: bool = False,
                     kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
-                    progress: Progress = no_progress) -> dict:
-    """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor)."""
+                    shard: tuple[int, int] = (1, 1), progress: Progress = no_progress) -> dict:
+    """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor).
+    ``shard`` (i, n): only every n-th utterance from the i-th (1-based), to run in parallel
+    processes; :func:`merge_reports` joins their reports."""
     from assistant.dialogue import classify
     from assistant.dialogue.speech.listener import DEFAULT_CONFIRM_BELOW
     from assistant.dialogue.speech.recogniser import make_recogniser
@@ -77,6 +79,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = 
     parsers = _Parsers()
     threshold = DEFAULT_CONFIRM_BELOW if confirm_below is None else confirm_below
     todo = speech_data.items(quick, all_voices, speech_data.SNRS_DB if snrs_db is None else snrs_db, kinds)
+    todo = todo[shard[0] - 1::shard[1]]
     rows = []
     for n, item in enumerate(todo, start=1):
         progress("speech test set", n, len(todo))
@@ -94,12 +97,28 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = 
             parser = parsers(item.world)
             row["plan_equal"] = plan_of(parser, heard.transcript) == plan_of(parser, item.text)
         rows.append(row)
+    recogniser.close()
+    head = {"engine": engine, "recogniser": recogniser.describe(), "quick": quick, "all_voices": all_voices,
+            "confirm_below": threshold, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
+    return report_of(rows, head)
+
+
+def report_of(rows: list[dict], head: dict) -> dict:
+    """``head`` plus the summaries of ``rows`` (all, by factor, by noise and kind) and the rows."""
     groups = {factor: {value: summarise(rs) for value, rs in sorted(_group(rows, factor).items())}
               for factor in ("noise", "voice", "rate", "kind")}
     by_noise_kind = {f"{noise} / {kind}": summarise(rs) for (noise, kind), rs in sorted(_group2(rows).items())}
-    return {"engine": engine, "recogniser": recogniser.describe(), "quick": quick, "all_voices": all_voices,
-            "utterances": len(rows), "summary": summarise(rows), "groups": groups, "noise_and_kind": by_noise_kind,
-            "confirm_below": threshold, "wall_seconds": round(time.perf_counter() - wall, 1), "rows": rows}
+    return {**head, "utterances": len(rows), "summary": summarise(rows), "groups": groups,
+            "noise_and_kind": by_noise_kind, "rows": rows}
+
+
+def merge_reports(reports: list[dict]) -> dict:
+    """One report from the reports of the shards of one run (rows in utterance order)."""
+    rows = sorted((r for rep in reports for r in rep["rows"]), key=lambda r: r["id"])
+    head = {k: v for k, v in reports[0].items() if k in ("engine", "recogniser", "quick", "all_voices", "confirm_below")}
+    head["wall_seconds"] = max(rep.get("wall_seconds", 0.0) for rep in reports)
+    head["merged_from"] = len(reports)
+    return report_of(rows, head)
 
 
 def summarise(rows: list[dict]) -> dict:

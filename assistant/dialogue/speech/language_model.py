@@ -22,7 +22,7 @@ log = logging.getLogger(__name__)
 
 #: bump when the way the model is built changes (invalidates the caches)
 BUILDER_VERSION = 1
-#: back-off discount mass of the trigram model (0.05 measured best on the speech test set)
+#: back-off discount mass of the trigram model (0.05 gave fewer errors than 0.2 or 0.5 in development)
 DEFAULT_DISCOUNT = 0.05
 
 

@@ -19,6 +19,8 @@ from assistant.dialogue.speech.vad import speech_spans
 
 #: utterances below this confidence are confirmed ("Did you say …?") instead of acted on
 DEFAULT_CONFIRM_BELOW = 0.45
+#: silence added before and after a recording before decoding (seconds)
+PAD_S = 0.4
 
 
 @dataclass
@@ -67,7 +69,10 @@ class Listener:
                                  f"noise, level {20 * np.log10(level + 1e-9):.0f} dBFS); speak closer to the "
                                  "microphone or check the recording")
         start, end = spans[0].start_s, spans[-1].end_s
-        return Heard(self.recogniser.recognise(samples), start, end, source)
+        # the acoustic model needs silence round the words; a file cut tight at the speech
+        # (or synthesised) has none, so some is added
+        pad = np.zeros(int(PAD_S * SAMPLE_RATE_HZ), dtype=np.float32)
+        return Heard(self.recogniser.recognise(np.concatenate([pad, samples, pad])), start, end, source)
 
     def hear_file(self, path) -> Heard:
         audio = read_audio(path)

@@ -8,7 +8,6 @@ when asked for another. Engines load their library lazily, so importing this mod
 
 from __future__ import annotations
 
-import time
 from abc import ABC, abstractmethod
 from dataclasses import asdict, dataclass, field
 
@@ -66,6 +65,11 @@ class Recogniser(ABC):
     def recognise(self, samples: np.ndarray) -> Recognition:
         """Decode one utterance (16 kHz mono float samples, silence around it welcome)."""
 
+    def stream(self) -> "RecognitionStream":
+        """Decode while audio arrives: ``feed`` pieces, then ``finish()`` for the
+        :class:`Recognition` (engines without streaming decode everything at the end)."""
+        return RecognitionStream(self)
+
     def spot(self, samples: np.ndarray, keyword: str = "stop") -> bool:
         """Whether ``keyword`` is said in ``samples`` (barge-in); engines may do better."""
         return keyword in self.recognise(samples).transcript.split()
@@ -74,10 +78,9 @@ class Recogniser(ABC):
         """Engine, model and settings, for ``--json`` outputs and the docs."""
         return {"engine": self.name}
 
-    def _timed(self, decode, samples: np.ndarray) -> tuple[object, float]:
-        start = time.perf_counter()
-        result = decode(samples)
-        return result, time.perf_counter() - start
+    def close(self) -> None:
+        """Wait for background loading to end (before the program exits)."""
+
 
 
 def make_recogniser(name: str = DEFAULT_ENGINE, **options) -> Recogniser:
@@ -94,3 +97,21 @@ def make_recogniser(name: str = DEFAULT_ENGINE, **options) -> Recogniser:
     except ImportError as error:
         raise RecogniserError(f"the {name} recogniser cannot load ({error})") from None
     return getattr(module, class_name)(**options)
+
+
+class RecognitionStream:
+    """One utterance decoded as it arrives; this base collects the audio and decodes at the end."""
+
+    def __init__(self, recogniser: Recogniser):
+        self.recogniser = recogniser
+        self.pieces: list[np.ndarray] = []
+
+    def feed(self, samples: np.ndarray) -> None:
+        self.pieces.append(np.asarray(samples, dtype=np.float32))
+
+    @property
+    def samples(self) -> np.ndarray:
+        return np.concatenate(self.pieces) if self.pieces else np.zeros(0, dtype=np.float32)
+
+    def finish(self) -> Recognition:
+        return self.recogniser.recognise(self.samples)

@@ -62,6 +62,7 @@ class SpeechChat:
         self.files = audio_files(args.audio_in) if getattr(args, "audio_in", None) else None
         self._mic = None
         self._utterances = None
+        self._stream = None
         self._stop_heard = 0
         self.latencies_s: list[float] = []  # end of speech → reply handed to the speaker
         self._heard_at: float | None = None
@@ -84,14 +85,17 @@ class SpeechChat:
                 except SpeechError as error:
                     self.session.show(f"(skipped {path.name}: {error})")
             raise EOFError
-        heard = None
-        while heard is None:
-            utterance = next(self._utterances)
-            try:
-                heard = self.listener.hear(utterance.samples, "microphone")
-            except SpeechError as error:
-                self.session.show(f"({error})")
-        return heard
+        from assistant.dialogue.speech.listener import Heard
+
+        utterance = next(self._utterances)  # decoded while it was said (see _on_samples)
+        stream, self._stream = self._stream, None
+        return Heard(stream.finish(), utterance.start_s, utterance.end_s, "microphone")
+
+    def _on_samples(self, samples, starting: bool) -> None:
+        """Endpointer hook (microphone): feed the recogniser while the person talks."""
+        if starting or self._stream is None:
+            self._stream = self.listener.recogniser.stream()
+        self._stream.feed(samples)
 
     def read_line(self) -> str:
         """The hook ChatSession reads from: the words to act on, after any confirmation."""
@@ -121,13 +125,15 @@ class SpeechChat:
             self._mic.listeners.append(lambda block: self._barge_in(spotter, block))
         except SpeechError as error:
             self.session.show(f"(no barge-in: {error})")
-        self._utterances = self._mic.utterances()
+        from assistant.dialogue.speech.vad import UtteranceDetector
+
+        self._utterances = self._mic.utterances(detector=UtteranceDetector(on_samples=self._on_samples))
         self.session.show("(listening: speak after the prompt; say \"stop\" to stop the robot)")
         return True
 
     def _barge_in(self, spotter, block) -> None:
         """Microphone callback: spot "stop" only while the robot drives or talks."""
-        if not self.session.manager.busy:
+        if not (self.session.manager.busy or self.speaker.speaking):
             spotter.reset()
             return
         if spotter.feed(block):
@@ -146,6 +152,7 @@ class SpeechChat:
         finally:
             if self._mic is not None:
                 self._mic.close()
+            self.listener.recogniser.close()
 
     def _warm_speaker(self) -> None:
         try:

@@ -23,12 +23,13 @@ import numpy as np
 
 from assistant.dialogue.speech.audio import to_pcm16
 from assistant.dialogue.speech.errors import RecogniserError, require
-from assistant.dialogue.speech.recogniser import Recognition, Recogniser
+from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
 
-#: decoder settings (language weights measured on the speech test set: docs/speech.md)
-DECODER_SETTINGS = {"dither": True, "seed": 1, "lw": 9.0, "fwdflatlw": 9.0, "bestpathlw": 9.0,
+#: decoder settings: pocketsphinx's language weights, wider beams than its defaults (fewer word
+#: errors in development, docs/speech.md), dither with a fixed seed
+DECODER_SETTINGS = {"dither": True, "seed": 1, "beam": 1e-60, "wbeam": 1e-40, "pbeam": 1e-60,
                     "loglevel": "FATAL"}
-FILLERS = frozenset({"<s>", "</s>", "<sil>", "[noise]", "<unk>"})
+FILLERS = frozenset({"<s>", "</s>", "<sil>", "<unk>"})
 FRAME_S = 0.01
 
 
@@ -61,8 +62,15 @@ class PocketsphinxRecogniser(Recogniser):
         self._open = None
         self._open_lock = threading.Lock()
         self._open_error: str | None = None
+        self._loader = None
         if open_fallback:
-            threading.Thread(target=self._load_open, name="pocketsphinx-open-model", daemon=True).start()
+            self._loader = threading.Thread(target=self._load_open, name="pocketsphinx-open-model", daemon=True)
+            self._loader.start()
+
+    def close(self) -> None:
+        # a daemon thread still inside the decoder's C++ code when Python exits aborts the program
+        if self._loader is not None:
+            self._loader.join()
 
     # ------------------------------------------------------------------ models
     def _load_open(self):
@@ -84,10 +92,16 @@ class PocketsphinxRecogniser(Recogniser):
     # ------------------------------------------------------------------ decoding
     def recognise(self, samples: np.ndarray) -> Recognition:
         samples = np.asarray(samples, dtype=np.float32)
-        audio_s = len(samples) / float(self.sample_rate_hz)
         start = time.perf_counter()
         pcm = to_pcm16(samples)
-        words = _decode(self._home, pcm)
+        return self._choose(_decode(self._home, pcm), pcm, start)
+
+    def stream(self) -> "SphinxStream":
+        return SphinxStream(self)
+
+    def _choose(self, words, pcm: bytes, start: float) -> Recognition:
+        """The home search's words, or the open search's when the home one is unsure."""
+        audio_s = len(pcm) / 2.0 / self.sample_rate_hz
         search = "home"
         if self.open_fallback and _confidence(words) < self.open_below:
             open_decoder = self._load_open()
@@ -100,17 +114,44 @@ class PocketsphinxRecogniser(Recogniser):
                            search, words)
 
 
+class SphinxStream(RecognitionStream):
+    """The home search fed while the person talks: at the end only its last passes remain.
+    (Cepstral mean normalisation is then live rather than over the whole utterance.)"""
+
+    def __init__(self, recogniser: PocketsphinxRecogniser):
+        super().__init__(recogniser)
+        recogniser._home.start_utt()
+        self.decode_s = 0.0
+
+    def feed(self, samples: np.ndarray) -> None:
+        super().feed(samples)
+        start = time.perf_counter()
+        self.recogniser._home.process_raw(to_pcm16(samples))
+        self.decode_s += time.perf_counter() - start
+
+    def finish(self) -> Recognition:
+        start = time.perf_counter()
+        self.recogniser._home.end_utt()
+        result = self.recogniser._choose(_words(self.recogniser._home), to_pcm16(self.samples), start)
+        result.decode_s += self.decode_s
+        return result
+
+
 def _decode(decoder, pcm: bytes) -> list[tuple[str, float, float, float]]:
     """(word, start s, end s, posterior) of the best hypothesis, fillers left out."""
     decoder.start_utt()
     decoder.process_raw(pcm, full_utt=True)
     decoder.end_utt()
+    return _words(decoder)
+
+
+def _words(decoder) -> list[tuple[str, float, float, float]]:
     if decoder.hyp() is None:
         return []
     out = []
     for seg in decoder.seg():
         word = seg.word.split("(", 1)[0]  # "the(2)": an alternative pronunciation
-        if word in FILLERS or word.startswith("+"):
+        if word in FILLERS or word[:1] in "+[":  # fillers: [SPEECH], [NOISE], +BREATH+
             continue
         out.append((word, seg.start_frame * FRAME_S, (seg.end_frame + 1) * FRAME_S,
                     float(min(1.0, max(0.0, seg.prob)))))

@@ -53,6 +53,7 @@ class Speaker:
         self._stop = threading.Event()
         self._engine = None
         self.fallbacks = 0
+        self.speaking = False  # sound is playing (barge-in listens then)
         self._check_voice()
         if self.say_to is not None:
             self._check_writable(self.say_to)
@@ -168,15 +169,17 @@ class Speaker:
             raise SpeechOutputError(f"--say-to {self.say_to}: cannot write ({error.strerror})") from None
 
     def _play(self, samples: np.ndarray) -> None:
-        from assistant.dialogue.speech.errors import MicrophoneError
-
-        sd = require("sounddevice", "pip install sounddevice; apt-get install libportaudio2", MicrophoneError)
+        sd = require("sounddevice", "pip install sounddevice; apt-get install libportaudio2", SpeechOutputError)
         try:
+            self.speaking = True
             sd.play(samples, SAMPLE_RATE_HZ)
             while not self._stop.wait(0.02):
                 if not sd.get_stream().active:
                     break
         except Exception as error:  # no output device: the reply is still printed
             self.play = False
+            self.speaking = False
             raise SpeechOutputError(f"cannot play sound ({error}); replies are printed (and written with "
                                     "--say-to FILE.wav)") from None
+        finally:
+            self.speaking = False

@@ -35,11 +35,14 @@ class UtteranceDetector:
 
     ``window_s``/``ratio``: the endpointer's decision window and the share of it that must be
     (non-)speech to switch; ``vad_mode``: 0 (loose) … 3 (strict); ``pad_s``: audio kept before
-    and after the speech; ``min_speech_s``: shorter bursts (a click, a cough) are ignored.
+    and after the speech; ``min_speech_s``: shorter bursts (a click, a cough) are ignored;
+    ``on_samples(samples, starting)``: called with the utterance's audio as soon as it is known to
+    be speech (``starting`` True for the first piece of a new utterance), so a recogniser can
+    decode while the person is still talking.
     """
 
     def __init__(self, window_s: float = 0.3, ratio: float = 0.9, vad_mode: int = 0, pad_s: float = 0.3,
-                 min_speech_s: float = 0.15):
+                 min_speech_s: float = 0.15, on_samples=None):
         from pocketsphinx import Endpointer
 
         self._ep = Endpointer(window=window_s, ratio=ratio, vad_mode=vad_mode, sample_rate=SAMPLE_RATE_HZ)
@@ -58,6 +61,7 @@ class UtteranceDetector:
         self._closing: Utterance | None = None
         self._start_s = 0.0
         self._end_s = 0.0
+        self.on_samples = on_samples
 
     @property
     def in_speech(self) -> bool:
@@ -95,6 +99,7 @@ class UtteranceDetector:
         out: list[Utterance] = []
         if self._closing is not None:  # collecting the trailing pad of the last utterance
             self._speech.append(frame)
+            self._tell(frame, False)
             self._trail -= 1
             if self._trail <= 0:
                 out.extend(self._finish_closing())
@@ -103,13 +108,20 @@ class UtteranceDetector:
                 self._start_s = self._ep.speech_start
                 first = int(round(self._start_s / self._ep.frame_length))
                 self._speech = [f for i, f in self._history if first - self._pad_frames <= i < first]
-            self._speech.append(from_pcm16(speech))
+                self._tell(np.concatenate(self._speech) if self._speech else np.zeros(0, np.float32), True)
+            piece = from_pcm16(speech)
+            self._speech.append(piece)
+            self._tell(piece, False)
         if was and not self._ep.in_speech:  # the last speech frame comes with in_speech off
             self._end_s = self._ep.speech_end
             out.extend(self._close())
         self._history.append((self._index, frame))
         self._index += 1
         return out
+
+    def _tell(self, samples: np.ndarray, starting: bool) -> None:
+        if self.on_samples is not None:
+            self.on_samples(samples, starting)
 
     def _close(self) -> list[Utterance]:
         if self._end_s - self._start_s < self.min_speech_s:

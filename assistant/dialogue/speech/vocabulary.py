@@ -37,6 +37,9 @@ HOUSEHOLD_OBJECTS = (
 #: how many times more often the home's objects appear in the templates than everyday objects
 KNOWN_WEIGHT = 5
 
+#: how many times the control phrases are repeated in the model text
+CONTROL_WEIGHT = 60
+
 #: what people say to the dialogue outside commands (see :mod:`assistant.dialogue.intents`)
 CONTROL_PHRASES = (
     "stop", "stop now", "stop it", "please stop", "halt", "wait", "hold on", "cancel", "never mind",
@@ -65,6 +68,26 @@ PLACE_TEMPLATES = (
     "the {o} is on the {f} to the left of the {f}", "the {o} is on the {f} to the right of the {f}",
     "the {o} is on the {f} behind the couch", "the {o} is on the {f} beside the chair",
 )
+
+
+#: the parts of a "where it is" command (written by us from the spatial relations of the RDT
+#: model, dissertation 4.3; generic English, not sentences of any test set)
+MOTIONS = ("go to the {r}", "go into the {r}", "head into the {r}", "walk into the {r}", "enter the {r}",
+           "in the {r}", "go in the {r}", "turn left into the {r}", "turn right into the {r}",
+           "go to the {r} and turn left", "go into the {r} and turn right", "enter the {r} turn left",
+           "go into the {r} turn right and go forward", "walk straight ahead into the {r}",
+           "go into the {r} and go straight ahead", "go into the {r} and walk past the couch",
+           "go into the {r} walk up to the far wall and turn left", "go to the {r} and take a right")
+SUBJECTS = ("the {o} is", "my {o} is", "the {o} is sitting", "your {o} is", "i left the {o}", "i think the {o} is")
+SIZES = ("", "small", "big", "little", "round", "square", "long", "wooden", "low", "large")
+RELATIONS = ("in front of the {f}", "behind the {f}", "beside the {f}", "next to the {f}", "by the {f}",
+             "to the left of the {f}", "to the right of the {f}", "on the left side of the {f}",
+             "on the right side of the {f}", "between the {f} and the {f}", "between the two chairs",
+             "near the {f}", "across from the {f}", "across the room from the {f}", "at the end of the {f}",
+             "with the chairs around it", "with the {f}", "against the wall", "in the corner",
+             "in the middle of the room", "at the far end of the room", "at the back on the left",
+             "on your left", "on your right", "ahead of you", "there", "right next to the {f}",
+             "right behind the {f}", "opposite the {f}")
 
 
 @dataclass(frozen=True)
@@ -167,11 +190,31 @@ def template_sentences(words: dict[str, list[str]]) -> list[str]:
     return [normalise_transcript(s) for s in out]
 
 
+def clause_sentences(words: dict[str, list[str]], count: int = 12000) -> list[str]:
+    """Commands built from :data:`MOTIONS`, :data:`SUBJECTS`, :data:`SIZES` and :data:`RELATIONS`
+    over the home's rooms, objects and furniture: ``count`` of them, picked by fixed strides
+    through the combinations so that every part appears and the text is the same every time."""
+    rooms, objects = words["rooms"], words["objects"]
+    furniture = [f for f in words["furniture"] if len(f.split()) <= 2]
+    out = []
+    for n in range(count):
+        room, obj = rooms[n % len(rooms)], objects[(n // 3) % len(objects)]
+        fur, other = furniture[(n * 7) % len(furniture)], furniture[(n * 11 + 3) % len(furniture)]
+        size = SIZES[(n * 5) % len(SIZES)]
+        subject = SUBJECTS[(n * 3) % len(SUBJECTS)].format(o=obj)
+        relation = RELATIONS[(n * 13) % len(RELATIONS)].format(f=other)
+        clause = f"{subject} on the {size + ' ' if size else ''}{fur} {relation}"
+        motion = MOTIONS[(n * 17) % len(MOTIONS)].format(r=room)
+        out.append(clause if n % 4 == 0 else f"{motion} {clause}")
+    return [normalise_transcript(s) for s in out]
+
+
 def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
     """The sentences and phrases the recogniser's model is built from (see the module doc)."""
     words = home_words(world)
-    sentences = corpus_sentences(corpus_paths) + template_sentences(words)
-    sentences += [normalise_transcript(p) for p in CONTROL_PHRASES]
+    sentences = corpus_sentences(corpus_paths) + template_sentences(words) + clause_sentences(words)
+    # short phrases said on their own: weighted so a sentence start does not drown them
+    sentences += [normalise_transcript(p) for p in CONTROL_PHRASES] * CONTROL_WEIGHT
     phrases = [normalise_transcript(p) for p in CONTROL_PHRASES]
     phrases += [normalise_transcript(t.format(o=o)) for o in words["objects"] for t in OBJECT_TEMPLATES[:4]]
     phrases += words["rooms"] + words["furniture"]

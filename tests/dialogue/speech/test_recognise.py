@@ -1,0 +1,84 @@
+"""pocketsphinx on the home model: words, confidence, the open fallback, the model cache, barge-in."""
+
+import numpy as np
+import pytest
+
+from assistant.dialogue.speech.errors import AudioFileError, RecogniserError
+from assistant.dialogue.speech.listener import Confirmer, Listener
+from assistant.eval.speech import word_errors
+
+from .conftest import speak
+
+
+def test_a_fetch_command_is_heard(recogniser):
+    said = "please go into the living room the glasses case is on the table in front of the couch"
+    heard = recogniser.recognise(speak(said, rate=160))
+    assert word_errors(said, heard.transcript) <= 2, heard.transcript
+    assert 0.3 < heard.confidence <= 1.0
+    assert heard.search == "home" and heard.words and heard.real_time_factor > 0
+
+
+def test_silence_is_not_a_transcript(recogniser):
+    with pytest.raises(AudioFileError, match="no speech heard"):
+        Listener(recogniser=recogniser).hear(np.zeros(32000, dtype=np.float32), "quiet.wav")
+
+
+def test_listener_reads_a_stereo_44k_file(recogniser, say_wav):
+    path = say_wav("where is my laptop", rate_hz=44100, channels=2)
+    heard = Listener(recogniser=recogniser).hear_file(path)
+    assert heard.transcript == "where is my laptop"
+    assert heard.source_rate_hz == 44100 and heard.source_channels == 2
+    assert 0.3 < heard.speech_start_s < heard.speech_end_s
+
+
+def test_home_model_is_cached_by_its_text(tmp_path):
+    from assistant.dialogue.speech.language_model import build_home_model
+    from assistant.dialogue.speech.vocabulary import SpeechVocabulary
+
+    v1 = SpeechVocabulary(("go to the kitchen", "where is my mug"), ("stop",))
+    v2 = SpeechVocabulary(("go to the kitchen", "where is my wallet", "zzqx"), ("stop",))
+    a, again, b = (build_home_model(v, cache=tmp_path) for v in (v1, v1, v2))
+    assert a.lm == again.lm and a.lm != b.lm  # the same text reuses the model, new text builds anew
+    assert b.dropped == ("zzqx",) and "wallet" in b.dictionary.read_text()
+    assert "wallet" not in a.dictionary.read_text()
+
+
+def test_unknown_engine_lists_the_known_ones():
+    from assistant.dialogue.speech.recogniser import make_recogniser
+
+    with pytest.raises(KeyError, match="pocketsphinx, vosk"):
+        make_recogniser("whisper")
+    with pytest.raises(RecogniserError, match="--asr vosk"):
+        make_recogniser("pocketsphinx", asr_model="/tmp/model")
+
+
+def test_confirmer_asks_below_the_threshold_and_acts_on_yes():
+    c = Confirmer(below=0.5)
+    assert c.check("where is my mug", 0.9) == ("where is my mug", None)
+    text, question = c.check("where is my mug", 0.2)
+    assert text is None and "Did you say" in question and "where is my mug" in question
+    assert c.check("yes", 0.9) == ("where is my mug", None)
+    c.check("bring me the fork", 0.1)
+    assert c.check("no", 0.9)[1].startswith("Sorry")
+    c.check("bring me the fork", 0.1)
+    assert c.check("where is my laptop", 0.9) == ("where is my laptop", None)  # a new utterance
+
+
+def test_stop_is_spotted_soon_after_it_is_said():
+    from assistant.dialogue.speech.keyword import KeywordSpotter
+
+    rng = np.random.default_rng(2)
+    stop = speak("stop", pad_s=0.0)
+    x = np.concatenate([np.zeros(16000, np.float32), stop, np.zeros(16000, np.float32)])
+    x = x + rng.normal(0, 3e-3, len(x)).astype(np.float32)
+    word_end_s = 1.0 + len(stop) / 16000
+    spotter = KeywordSpotter("stop")
+    heard_at = None
+    for i in range(0, len(x), 480):  # 30 ms blocks, as the microphone delivers them
+        if spotter.feed(x[i:i + 480]):
+            heard_at = spotter.heard_s
+            break
+    assert heard_at is not None and heard_at - word_end_s <= 0.3
+    other = speak("the mug is on the table in the bedroom") + rng.normal(0, 3e-3, 1).astype(np.float32)
+    spotter = KeywordSpotter("stop")
+    assert not any(spotter.feed(other[i:i + 480]) for i in range(0, len(other), 480))
