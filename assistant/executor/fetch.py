@@ -3,8 +3,7 @@ furniture the object is on.
 
 The high tier is a sequence of three sub-tasks:
 
-1. **enter the target room** through its door (:func:`~assistant.executor.entry.enter_room`),
-   then look around once so perception sees the room;
+1. **enter the target room** (:func:`~assistant.executor.entry.enter_room`), look around once;
 2. **follow the RDT nodes** in order (the low tier, Fig. 5.8: collect sensory data, build the
    world state feature, decide the move-to target with the node's policy model, drive there):
 
@@ -24,15 +23,11 @@ or the nodes run out without target furniture in view, the robot searches the su
 makes likely — the room's furniture of the target's kind, nearest the robot's view first —
 before giving up with ``reference_not_found``.
 
-The task runs in a :class:`~assistant.executor.context.TaskContext` it is handed (robot,
-perception, obstacle map, localizer, navigator, budget, events). Everything ends in a
-:class:`FetchResult` (status: success or why not). All driving is bounded by the follower's own
-budgets and by the context's ``max_sim_seconds`` over the whole task. Choosing furniture is
-:mod:`assistant.executor.choosing`, seeing it :mod:`assistant.executor.viewing`, entering the
-room :mod:`assistant.executor.entry`.
-The task reads the floor plan (told), the perception source and the robot's odometry — never
-the world file's furniture or objects (only :class:`~assistant.executor.sensing.OracleFurniture`
-does, and only when asked for).
+The task runs in the :class:`~assistant.executor.context.TaskContext` it is handed and ends in
+a :class:`FetchResult`; driving is bounded by the follower's budgets and the context's
+``max_sim_seconds``. Choosing furniture is :mod:`~assistant.executor.choosing`, seeing it
+:mod:`~assistant.executor.viewing`, entering the room :mod:`~assistant.executor.entry`. It never
+reads the world file's furniture or objects (only the oracle perception source does).
 """
 
 from __future__ import annotations
@@ -117,6 +112,7 @@ class FetchTask:
         self._surveyed = False
         self._said = NOTHING_SAID  # words said about the current target
         self._said_from: Pose2D | None = None  # where "on your left" is said from, when not the node's start
+        self._detector_blind = False  # the object detector cannot read this robot's frames
         ctx.add_frame_listener(self._observe_moving)
         ctx.add_frame_listener(self._detect_objects)
 
@@ -134,6 +130,10 @@ class FetchTask:
     def _detect_objects(self, frame, pose: Pose2D) -> None:
         """Run the object detector on ``frame`` (taken at ``pose``); report what it sees."""
         if self.object_detector is None:
+            return
+        reads = getattr(self.object_detector, "reads", None)
+        if reads is not None and not reads(frame):
+            self._detector_blind = True  # e.g. a replayed session: not seeing means nothing
             return
         sightings = self.object_detector.detect(frame)
         if sightings:
@@ -283,7 +283,7 @@ class FetchTask:
         other surfaces the plan allows in the room, nearest first, until it does; the surface it
         is seen on, or None (the target stays)."""
         name = getattr(plan, "object", None)
-        if self.object_detector is None or not name:
+        if self.object_detector is None or not name or self._detector_blind:
             return None
         before = self.ctx.seen.get(name)
         self._observe_here()

@@ -68,6 +68,11 @@ class ObjectDetector(Protocol):
 
     def detect(self, frame: DepthFrame) -> list[Sighting]: ...
 
+    def reads(self, frame: DepthFrame) -> bool:
+        """Whether this detector can tell anything from ``frame`` at all (False: an empty
+        :meth:`detect` means "cannot tell", not "nothing there")."""
+        ...
+
 
 class SimObjectDetector:
     """The simulator's object detector: reads the renderer's hit ids (never used on hardware).
@@ -97,6 +102,10 @@ class SimObjectDetector:
     def for_scene(cls, scene, **params) -> "SimObjectDetector":
         """A detector for the objects placed in a :class:`~assistant.world.Scene`."""
         return cls([obj.name for obj in scene.objects], **params)
+
+    def reads(self, frame: DepthFrame) -> bool:
+        """Only the simulator's own frames (with hit ids): a replayed or real frame tells it nothing."""
+        return frame.hit_ids is not None
 
     def detect(self, frame: DepthFrame) -> list[Sighting]:
         """The recognisable objects in ``frame``; empty when the frame has no hit ids (a real

@@ -196,3 +196,17 @@ def test_without_an_object_detector_nothing_is_seen(apartment, policies):
     plan = _plan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case")
     result, _ = _run(apartment, plan, policies)
     assert result.seen == [] and result.to_dict()["seen"] == []
+
+
+def test_a_detector_that_cannot_read_the_frames_sends_the_robot_to_no_other_surface():
+    """A replayed or real frame has no simulator hit ids: the simulator's object detector cannot
+    tell from it, so not seeing the object there is no reason to look elsewhere (a replayed fetch
+    must make the recorded decisions)."""
+    import numpy as np
+
+    from assistant.perception.objects import SimObjectDetector
+    from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
+
+    detector = SimObjectDetector(["mug"])
+    frame = DepthFrame(np.ones((480, 640), dtype=np.float32), CameraIntrinsics.kinect_v1(), CameraMount(1.0, 0.2), None)
+    assert not detector.reads(frame) and detector.detect(frame) == []
