@@ -49,7 +49,10 @@ def test_world_option_flags_an_ambiguous_table(capsys):
 def test_plain_text_output_names_nodes_and_notes(capsys):
     status, out, _ = run(capsys, "the mug is on the table by the flurbostat")
     assert status == 0
-    assert "node 1:" in out and "unused words: flurbostat" in out and "note: no_room" in out
+    # any noun can be a landmark ("by the lamp"): the unknown word is read as an object landmark
+    assert "node 1: flurbostat-beside-table" in out and "note: no_room" in out
+    status, out, _ = run(capsys, "the mug is on the table qqqq zzzz")
+    assert "unused words:" in out
 
 
 def test_batch_gives_one_json_line_per_request_and_errors_in_place(capsys, tmp_path):

@@ -33,7 +33,7 @@ def test_misspelt_world_and_scene_are_named_with_the_known_ones(capsys):
     err = capsys.readouterr().err
     assert "unknown world 'apartmnt'" in err and "hk-studio" in err
     assert main(["world", "apartment", "--scene", "moddified"]) == 2
-    assert "unknown scene 'moddified'; known: modified, original" in capsys.readouterr().err
+    assert "unknown scene 'moddified'; known: lived-in, modified, original" in capsys.readouterr().err
 
 
 def test_console_script_runs_as_a_process():

@@ -41,12 +41,12 @@ def test_json_answer_has_the_contract_fields(capsys, generation_model):
 
 def test_batch_goes_on_after_a_bad_line(tmp_path, capsys, generation_model):
     code, lines = _run_batch(['{"object": "fork", "world": "hk-studio", "scene": "modified"}',
-                              '{"object": "stapler", "world": "apartment"}',
+                              '{"object": "mug", "world": "atlantis"}',
                               '{"object": "mug", "world": "apartment", "question": "how do I get to my mug"}'],
                              tmp_path, capsys)
     assert code == 0 and len(lines) == 3
     assert lines[0]["found"] and "fork" in lines[0]["description"]
-    assert "error" in lines[1] and "glasses case" in lines[1]["error"]
+    assert "error" in lines[1] and "apartment" in lines[1]["error"]  # the known homes are listed
     assert lines[2]["style"] == "dynamic" and lines[2]["description"].startswith("Go into the bedroom")
 
 
