@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 import logging
-import threading
 import time
 from pathlib import Path
 
@@ -146,7 +145,9 @@ class SpeechChat:
         """Run the chat; returns its exit status."""
         if self.files is not None or self._open_microphone():
             self.session.read_line = self.read_line
-        threading.Thread(target=self._warm_speaker, daemon=True).start()
+        # before the greeting, not beside it: synthesis silences stdout while it runs (pyttsx3's
+        # chatter), and a thread still inside espeak's C code at exit aborts the program
+        self._warm_speaker()
         try:
             return self.session.loop()
         finally:
