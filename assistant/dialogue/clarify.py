@@ -5,7 +5,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from assistant.app import known_object_names
 from assistant.dialogue.intents import ordinal_choice
+from assistant.grounding.objects import object_phrase
 
 #: furniture words the robot can be told an unknown word stands for
 FURNITURE_CHOICES = ("table", "chair", "couch", "bed")
@@ -197,3 +199,36 @@ def distinct_phrases(world, scene: str, items) -> list[str]:
     for rank, k in enumerate(order):
         out[k] = f"the {ordinal[min(rank, 5)]} one from the west"
     return out
+
+
+def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str | None, str | None]:
+    """(the known object the words name, or None; the unknown noun asked about, or None):
+    what "where is my …" asks for. Any noun phrase can name a thing (issue 16)."""
+    known = sorted(known_object_names(world), key=len, reverse=True)
+    padded = f" {norm} "
+    for k in known:
+        if f" {k} " in padded or f" {k}s " in padded:
+            return k, None
+    if plan_object:
+        return plan_object, None
+    m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
+        re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
+    if m:
+        noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on)\b", "", m.group(1)).strip()
+        found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
+        if found is not None:  # any thing can be asked about (issue 16)
+            return found.kind, None
+        return None, noun or None
+    return None, None
+
+
+def fetch_command_text(obj: str | None, phrase: str | None, room: str | None) -> str:
+    """The fetch command a clarified request stands for ("bring me the mug from the table … in
+    the bedroom")."""
+    place = re.sub(r"^(on|at|by) ", "", phrase or "").strip()
+    parts = [f"bring me the {obj}" if obj else "go"]
+    if place:
+        parts.append(f"from {place}" if obj else f"to {place}")
+    if room:
+        parts.append(f"in the {room}")
+    return " ".join(parts)

@@ -94,3 +94,14 @@ def teach_phrase(text: str) -> str | None:
     norm = normalise(text)
     m = re.search(r"\b(?:what|where) (.+?) (?:means|is)\b", norm) or re.search(r"\bshow you (?:how to go )?(.+)$", norm)
     return m.group(1).strip() if m else None
+
+
+#: intents that are always a new request, whatever question is pending
+NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home"})
+
+#: words of a request that are politeness, not content (never "unknown words")
+POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
+           "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
+
+#: phrases that name no place ("teach me something")
+VAGUE_PHRASES = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}

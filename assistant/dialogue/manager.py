@@ -23,8 +23,9 @@ import re
 import time
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
-                                        furniture_mentions, model_choice, unused_mentions)
-from assistant.dialogue.intents import classify, teach_phrase
+                                        fetch_command_text, furniture_mentions, model_choice, named_object,
+                                        unused_mentions)
+from assistant.dialogue.intents import NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, classify, teach_phrase
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
@@ -32,7 +33,7 @@ from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, Turn
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
-from assistant.grounding.objects import is_object_word, object_phrase
+from assistant.grounding.objects import is_object_word
 from assistant.grounding.rooms import unknown_room_named
 from assistant.grounding.vocabulary import FURNITURE_WORDS, STRUCTURE_REFERENCES
 
@@ -180,22 +181,7 @@ class DialogueManager:
     # ------------------------------------------------------------------ where / how
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
         """(known object named in the text, or None; the unknown noun asked about, or None)."""
-        known = sorted(known_object_names(self.world), key=len, reverse=True)
-        padded = f" {norm} "
-        for k in known:
-            if f" {k} " in padded or f" {k}s " in padded:
-                return k, None
-        if plan_object:
-            return plan_object, None
-        m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
-            re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
-        if m:
-            noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on)\b", "", m.group(1)).strip()
-            found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
-            if found is not None:  # any thing can be asked about (issue 16)
-                return found.kind, None
-            return None, noun or None
-        return None, None
+        return named_object(norm, self.world, plan_object)
 
     def _where(self, text: str, intent, start: float) -> Turn:
         obj, unknown = self._object_in(intent.text)
@@ -213,7 +199,7 @@ class DialogueManager:
             place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
             room = f" in the {seen.room}" if seen.room else ""
             reply = f"I saw your {obj} {self.memory.age(seen)}{place}{room}. Shall I go and check?"
-            self.pending = {"kind": "confirm", "command": self._fetch_text(obj, seen.phrase, seen.room),
+            self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
                               source="memory", memory=seen.to_dict())
@@ -271,7 +257,7 @@ class DialogueManager:
     # ------------------------------------------------------------------ teaching
     def _teach(self, text: str, start: float) -> Turn:
         phrase = teach_phrase(text)
-        if not phrase or phrase in _VAGUE:
+        if not phrase or phrase in VAGUE_PHRASES:
             return self._turn(text, "teach", "What would you like to show me? Say it like: let me show you "
                               "what 'in front of the couch' means.", "clarify", "asked", start)
         plan = self.services.parser(self.world).parse(f"go to the table {phrase}").plan
@@ -294,21 +280,12 @@ class DialogueManager:
             text = re.sub(rf"\b{re.escape(word)}\b", replacement, text, flags=re.I)
         return text
 
-    def _fetch_text(self, obj: str | None, phrase: str | None, room: str | None) -> str:
-        place = re.sub(r"^(on|at|by) ", "", phrase or "").strip()
-        parts = [f"bring me the {obj}" if obj else "go"]
-        if place:
-            parts.append(f"from {place}" if obj else f"to {place}")
-        if room:
-            parts.append(f"in the {room}")
-        return " ".join(parts)
-
     def _command(self, text: str, start: float, force: bool = False, original: str | None = None) -> Turn:
         said = original or text
         text = self._substitute(text)
         parsed = self.services.parser(self.world).parse(text)
         plan = parsed.plan
-        unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in _POLITE]
+        unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in POLITE_WORDS]
         tags = dict(zip(parsed.analysis.tokens, parsed.analysis.pos))
         nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))]
         # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
@@ -358,7 +335,7 @@ class DialogueManager:
         if room is None:
             seen = self.memory.recall(self.world.name, obj) if obj else None
             if seen is not None and seen.room and not plan.nodes and not mentions:
-                return self._start_fetch(said, self._fetch_text(obj, seen.phrase, seen.room), seen.room, obj,
+                return self._start_fetch(said, fetch_command_text(obj, seen.phrase, seen.room), seen.room, obj,
                                          start, memory=seen.to_dict())
             if seen is not None and seen.room:
                 room = seen.room
@@ -380,7 +357,7 @@ class DialogueManager:
                 if turn is not None:
                     return turn
         if obj and plan.object is None and not plan.nodes and room:  # the parser lost the object
-            text = self._fetch_text(obj, None, room)
+            text = fetch_command_text(obj, None, room)
         return self._start_fetch(said, text, room, obj, start, plan=plan.to_dict(),
                                  ignored=unused)
 
@@ -394,7 +371,7 @@ class DialogueManager:
         chosen = model_choice(mentions, items) if len(items) > 1 else (items[0] if dropped else None)
         if chosen is not None:
             phrase = furniture_phrase(self.services.describer, self.world, self.scene, chosen)
-            turn = self._start_fetch(said, self._fetch_text(obj, phrase, chosen.room), chosen.room, obj, start)
+            turn = self._start_fetch(said, fetch_command_text(obj, phrase, chosen.room), chosen.room, obj, start)
             turn.data["chosen"] = chosen.id
             return turn
         return self._ask_which(said, text, word, room, obj, start)
@@ -475,7 +452,7 @@ class DialogueManager:
             if index is not None:
                 self.pending = None
                 option = p["options"][index]
-                command = self._fetch_text(p["object"], option["phrase"], option["room"])
+                command = fetch_command_text(p["object"], option["phrase"], option["room"])
                 turn = self._command(command, start, force=True, original=text)
                 turn.data["chosen"] = option["id"]
                 return turn
@@ -509,12 +486,3 @@ class DialogueManager:
         turn.final = False
         self.worker.start(kind, text, task_room, task_object, style)
         return turn
-
-#: intents that are always a new request, whatever question is pending
-NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home"})
-
-_POLITE = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
-           "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
-
-_VAGUE = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}
-

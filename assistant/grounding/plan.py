@@ -132,14 +132,10 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
     chunks = tree.chunks()
     if len(chunks) != len(groundings):
         raise ValueError(f"{len(chunks)} chunks but {len(groundings)} groundings")
-    by_id = {id(chunk): g for (chunk, _, _), g in zip(chunks, groundings)}
     plan = GroundingPlan()
-    flags: list[str] = []
     for g in groundings:
         if plan.room is None and g.room:
             plan.room = g.room
-    # the object: the first the catalogue knows, else the first said ("with a yellow clock on it
-    # the glasses case is …" fetches the glasses case)
     # the object: the first of the object phrases the catalogue knows ("with a yellow clock on it
     # the glasses case is …" fetches the glasses case); else one it knows said elsewhere, not as a
     # landmark ("on the desk you will see the keys", chunked as a place); else the first said
@@ -147,83 +143,12 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
     plan.object = next((o for o in objects if is_object_word(o)), None) \
         or said_object([([t.text for t in c.own_tokens], [t.pos for t in c.own_tokens]) for c, _, _ in chunks]) \
         or (objects[0] if objects else None)
-
-    builders: list[_NodeBuilder] = []
-
-    def pair_of(g: ChunkGrounding) -> tuple[str, str]:
-        direction = g.direction
-        if direction is None:
-            direction = DEFAULT_DIRECTION.get(g.reference, "front")
-            if g.reference != "stop":
-                flags.append(f"missing_direction:{g.reference}")
-        return g.reference, direction
-
-    loose: list = []  # the words of a run outside every chunk (top level only)
-
-    room_said = [False]  # a room chunk has been visited (moves said before it are its route)
-    route: list[_NodeBuilder] = []
-
-    def flush_loose() -> None:
-        for pair, _ in loose_moves([t.text for t in loose]):
-            builders.append(_NodeBuilder(NO_TARGET, [pair]))
-            if not room_said[0]:
-                route.append(builders[-1])
-        loose.clear()
-
-    def visit(items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
-        for item in items:
-            if not hasattr(item, "label"):
-                if parent_key == 0:
-                    loose.append(item)
-                continue
-            if parent_key == 0:
-                flush_loose()
-            g = by_id.get(id(item), ChunkGrounding())
-            room_said[0] = room_said[0] or bool(g.room)
-            if g.target:
-                own = [t.text for t in item.own_tokens]
-                node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
-                                    descriptors=said_descriptors(own))
-                if g.reference:
-                    node.pairs.append(pair_of(g))
-                node.pairs.extend(p for p in side_of_room(item.own_tokens) if p not in node.pairs)
-                visit(item.items, node, id(item))
-                # move steps nested in the target chunk were appended first; the node follows
-                builders.append(node)
-                continue
-            if g.reference:
-                reference, direction = pair_of(g)
-                if reference == "move" and enclosing is not None and not _has_verb(item.own_tokens):
-                    # "on the table just ahead of you": no step is asked for, the place is said
-                    # from where the robot stands
-                    reference = "robot"
-                passing = enclosing is None and reference in FURNITURE_WORDS.values() and \
-                    any(str(t.text).lower() in PASSING_WORDS for t in item.own_tokens)
-                if passing:  # "pass the couch": a step to its far side, no target there
-                    builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)]))
-                elif reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
-                    amount = said_amount([t.text for t in item.own_tokens]) if reference == "move" else Amount()
-                    builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)], amount=amount))
-                elif enclosing is not None:
-                    enclosing.pairs.append((reference, direction))
-                    if reference in ("room", "robot"):  # "at the back on the left": both hold
-                        for extra in said_directions(item.own_tokens, far_is_back=reference == "room"):
-                            if (reference, extra) not in enclosing.pairs:
-                                enclosing.pairs.append((reference, extra))
-                else:
-                    last = builders[-1] if builders else None
-                    if last is not None and last.implied and last.parent_id == parent_key:
-                        last.pairs.append((reference, direction))
-                    else:
-                        builders.append(_NodeBuilder("table", [(reference, direction)], None, True, parent_key))
-                visit(item.items, enclosing, id(item))
-                continue
-            visit(item.items, enclosing, id(item))
-
-    visit(tree.items, None, 0)
-    flush_loose()
+    walk = _PlanWalk({id(chunk): g for (chunk, _, _), g in zip(chunks, groundings)})
+    walk.visit(tree.items, None, 0)
+    walk.flush_loose()
+    builders = walk.builders
     if plan.room is not None:  # "go forward and turn into the room on the right": the way to the room
-        builders = [b for b in builders if not any(b is r for r in route)]
+        builders = [b for b in builders if not any(b is r for r in walk.route)]
     for b in builders:  # "… the statue, that's the statue": the object is no landmark of itself
         if b.target != NO_TARGET:
             b.pairs = [p for p in b.pairs if p[0] != plan.object]
@@ -232,6 +157,7 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
     plan.kind = ("dynamic" if all(dynamic) else "static" if not any(dynamic) else "mixed") if plan.nodes else "static"
     targets = [n for n in plan.nodes if n.target != NO_TARGET and not n.implied_target]
     plan.support = targets[-1].support if targets else None
+    flags = walk.flags
     for n in plan.nodes:
         if n.implied_target:
             flags.append(f"implied_target:{n.target}")
@@ -239,6 +165,88 @@ def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
             flags.append(f"unreferenced_target:{n.target}")
     plan.flags = list(dict.fromkeys(flags))
     return plan
+
+
+class _PlanWalk:
+    """One walk over a chunk tree, in pre-order, turning grounded chunks into node builders."""
+
+    def __init__(self, by_id: dict):
+        self.by_id = by_id
+        self.builders: list[_NodeBuilder] = []
+        self.flags: list[str] = []
+        self.loose: list = []  # the words of a run outside every chunk (top level only)
+        self.room_said = False  # a room chunk has been visited (moves said before it are its route)
+        self.route: list[_NodeBuilder] = []
+
+    def pair_of(self, g: ChunkGrounding) -> tuple[str, str]:
+        direction = g.direction
+        if direction is None:
+            direction = DEFAULT_DIRECTION.get(g.reference, "front")
+            if g.reference != "stop":
+                self.flags.append(f"missing_direction:{g.reference}")
+        return g.reference, direction
+
+    def flush_loose(self) -> None:
+        for pair, _ in loose_moves([t.text for t in self.loose]):
+            self.builders.append(_NodeBuilder(NO_TARGET, [pair]))
+            if not self.room_said:
+                self.route.append(self.builders[-1])
+        self.loose.clear()
+
+    def visit(self, items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
+        for item in items:
+            if not hasattr(item, "label"):
+                if parent_key == 0:
+                    self.loose.append(item)
+                continue
+            if parent_key == 0:
+                self.flush_loose()
+            g = self.by_id.get(id(item), ChunkGrounding())
+            self.room_said = self.room_said or bool(g.room)
+            if g.target:
+                self._target_chunk(item, g)
+            elif g.reference:
+                self._reference_chunk(item, g, enclosing, parent_key)
+                self.visit(item.items, enclosing, id(item))
+            else:
+                self.visit(item.items, enclosing, id(item))
+
+    def _target_chunk(self, item, g: ChunkGrounding) -> None:
+        own = [t.text for t in item.own_tokens]
+        node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
+                            descriptors=said_descriptors(own))
+        if g.reference:
+            node.pairs.append(self.pair_of(g))
+        node.pairs.extend(p for p in side_of_room(item.own_tokens) if p not in node.pairs)
+        self.visit(item.items, node, id(item))
+        # move steps nested in the target chunk were appended first; the node follows
+        self.builders.append(node)
+
+    def _reference_chunk(self, item, g: ChunkGrounding, enclosing: _NodeBuilder | None, parent_key: int) -> None:
+        reference, direction = self.pair_of(g)
+        if reference == "move" and enclosing is not None and not _has_verb(item.own_tokens):
+            # "on the table just ahead of you": no step is asked for, the place is said from
+            # where the robot stands
+            reference = "robot"
+        passing = enclosing is None and reference in FURNITURE_WORDS.values() and \
+            any(str(t.text).lower() in PASSING_WORDS for t in item.own_tokens)
+        if passing:  # "pass the couch": a step to its far side, no target there
+            self.builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)]))
+        elif reference == "move" or (enclosing is None and reference in DYNAMIC_REFERENCES):
+            amount = said_amount([t.text for t in item.own_tokens]) if reference == "move" else Amount()
+            self.builders.append(_NodeBuilder(NO_TARGET, [(reference, direction)], amount=amount))
+        elif enclosing is not None:
+            enclosing.pairs.append((reference, direction))
+            if reference in ("room", "robot"):  # "at the back on the left": both hold
+                for extra in said_directions(item.own_tokens, far_is_back=reference == "room"):
+                    if (reference, extra) not in enclosing.pairs:
+                        enclosing.pairs.append((reference, extra))
+        else:
+            last = self.builders[-1] if self.builders else None
+            if last is not None and last.implied and last.parent_id == parent_key:
+                last.pairs.append((reference, direction))
+            else:
+                self.builders.append(_NodeBuilder("table", [(reference, direction)], None, True, parent_key))
 
 
 def unused_words(tree, vocabulary: set[str] | frozenset[str], unknown: Sequence[str] = (),
