@@ -64,14 +64,14 @@ class Sighting:
 
 @runtime_checkable
 class ObjectDetector(Protocol):
-    """Anything that reports the small objects visible in a depth (or RGB-D) frame."""
+    """Anything that reports the small objects visible in a depth (or RGB-D) frame.
+
+    A detector may also have ``reads(frame) -> bool``: whether it can tell anything from that
+    frame at all (False: an empty :meth:`detect` means "cannot tell", not "nothing there"); the
+    fetch task asks it before searching other surfaces for an object it did not see.
+    """
 
     def detect(self, frame: DepthFrame) -> list[Sighting]: ...
-
-    def reads(self, frame: DepthFrame) -> bool:
-        """Whether this detector can tell anything from ``frame`` at all (False: an empty
-        :meth:`detect` means "cannot tell", not "nothing there")."""
-        ...
 
 
 class SimObjectDetector:
