@@ -1,22 +1,16 @@
 """The manager with the real parser and describer; the simulator is replaced by a stand-in
 fetcher (the real one is exercised by `assistant eval dialogue` and the chat CLI test)."""
 
+import sys
 import time
+from pathlib import Path
 
 import pytest
 
 from assistant.dialogue import DialogueManager, ObjectMemory, Services
 
-
-def fetch_result(success: bool, furniture: str, obj: str = "mug", seen_objects=(), perceived=None):
-    """A fetch's application-layer result as the stand-in fetchers report it."""
-    from assistant.app import Result, Status
-
-    data = {"success": success, "failure": None if success else "not_visible", "final_pose": [1.0, 2.0, 0.0],
-            "executor": {"status": "success", "message": "facing the table",
-                         "target_furniture": {"id": furniture, "name": "table", "centre": [0, 0]}}}
-    return Result("fetch", Status.SUCCESS if success else Status.NOT_VISIBLE, "facing the table", data,
-                  seen=list(seen_objects), furniture=perceived, object=obj, object_seen=success)
+sys.path.insert(0, str(Path(__file__).parent))
+from standins import fetch_result  # noqa: E402  (the dialogue tests' shared stand-in)
 
 
 class StandInFetcher:

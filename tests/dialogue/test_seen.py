@@ -3,27 +3,21 @@ placed by the executor's function, the real describer), then through the manager
 stand-in tasks that report ``objects_seen`` events the way the fetch and the search do."""
 
 import json
+import sys
 import time
+from pathlib import Path
 
 import pytest
 
 from assistant.dialogue import DialogueManager, ObjectMemory, Services
-
-
-def fetch_result(success: bool, furniture: str, obj: str = "mug", seen_objects=(), perceived=None):
-    """A fetch's application-layer result as the stand-in fetchers report it."""
-    from assistant.app import Result, Status
-
-    data = {"success": success, "failure": None if success else "not_visible", "final_pose": [1.0, 2.0, 0.0],
-            "executor": {"status": "success", "message": "facing the table",
-                         "target_furniture": {"id": furniture, "name": "table", "centre": [0, 0]}}}
-    return Result("fetch", Status.SUCCESS if success else Status.NOT_VISIBLE, "facing the table", data,
-                  seen=list(seen_objects), furniture=perceived, object=obj, object_seen=success)
 from assistant.dialogue.seen import SeenRecorder
 from assistant.executor.sightings import place_sightings
 from assistant.geometry import Pose2D
 from assistant.perception.objects import Sighting
 from assistant.world import furniture_entities, load_world, world_grid
+
+sys.path.insert(0, str(Path(__file__).parent))
+from standins import fetch_result  # noqa: E402  (the dialogue tests' shared stand-in)
 
 
 @pytest.fixture(scope="module")
