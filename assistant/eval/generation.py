@@ -300,17 +300,23 @@ def _singles_out(result, rdts, case, support, room, said_room, listener_pose) ->
         for e in same)
 
 
-def _listen(runner, result, case, listener_perception: str) -> dict | None:
-    """(b): the description handed to the simulated robot as a fetch command."""
+def listener_check(fetcher, result, world_name: str, scene: str, object_name: str,
+                   perception: str = "sensed", on_pose=None) -> dict | None:
+    """(b), the listener: a description (``result``, the describer's
+    :class:`~assistant.generation.types.GeneratedDescription`) handed to the simulated robot as a
+    fetch command from the world's start pose (``fetcher``: an :class:`~assistant.app.Fetcher`,
+    None for no check); ``{"success", "failure", "message", "target", "nodes"}`` — success
+    when ``object_name`` ends up in the robot's final camera view; ``on_pose(pose)`` hears the
+    robot's true pose now and then."""
     from assistant.errors import AssistantError
 
-    if runner is None:
+    if fetcher is None:
         return None
     if not result.found:
         return {"success": False, "failure": "not found by the search"}
     try:
-        outcome = runner.fetch(result.description, case.world_name, case.scene, listener_perception,
-                               object_name=case.obj.name)
+        outcome = fetcher.fetch(result.description, world_name, scene, perception, object_name=object_name,
+                                on_pose=on_pose)
         return {"success": outcome.success, "failure": outcome.data.get("failure"),
                 "message": outcome.data["executor"]["message"],
                 "target": (outcome.data["executor"].get("target_furniture") or {}).get("centre"),
@@ -355,7 +361,8 @@ def score_case(case, found, tools: _Tools, listener_perception: str = "sensed") 
     ours = {f"{r.reference}-{r.direction}" for r in rdts}
     people = set().union(*[p for _, p in refs]) if refs else set()
     return {
-        "listener": _listen(tools.runner, result, case, listener_perception),
+        "listener": listener_check(tools.runner, result, case.world_name, case.scene, case.obj.name,
+                                   listener_perception),
         "search": None if found is None else _search_row(found, case.obj, room),
         "world": case.world_name, "scene": case.scene, "object": case.obj.name, "description": text,
         "support_id": support.id, "support_at": [round(float(v), 2) for v in support.centroid_m],

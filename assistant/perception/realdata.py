@@ -93,18 +93,22 @@ def real_folders(root: str | Path) -> dict[str, dict]:
 def load_frames(root: str | Path):
     """``(folder, file name, DepthFrame)`` of every real frame of :func:`real_folders` that
     exists, read with its folder's depth units, intrinsics, invalid values and nearest depth."""
-    from assistant.perception.depthfile import load_depth_png
-
     for folder, spec in real_folders(root).items():
         for name in spec["frames"]:
             path = spec["path"] / name
-            if not path.exists():
-                continue
-            frame, _ = load_depth_png(path, spec["intrinsics"], spec["depth_scale_m"],
-                                      invalid_values=spec["invalid"])
-            if spec["min_depth_m"] > 0:
-                frame.depth_m[frame.depth_m < spec["min_depth_m"]] = 0.0
-            yield folder, name, frame
+            if path.exists():
+                yield folder, name, load_real_frame(path, spec)
+
+
+def load_real_frame(path: str | Path, spec: dict):
+    """One depth PNG read as :func:`folder_spec` ``spec`` says: its intrinsics, metres per unit,
+    invalid raw values, and readings nearer than ``min_depth_m`` dropped."""
+    from assistant.perception.depthfile import load_depth_png
+
+    frame, _ = load_depth_png(path, spec["intrinsics"], spec["depth_scale_m"], invalid_values=spec["invalid"])
+    if spec.get("min_depth_m", 0.0) > 0:
+        frame.depth_m[frame.depth_m < spec["min_depth_m"]] = 0.0
+    return frame
 
 
 def evaluate_realdata(root: str | Path, detector) -> dict:

@@ -12,14 +12,16 @@ with warnings.catch_warnings():  # meshcat 0.3.2 imports pyzmq's deprecated zmq.
     import meshcat  # noqa: F401
 
 from assistant.viz.clouds import HIT_COLOURS, depth_frame_points
-from assistant.viz.colours import room_colour, score_colours, to_hex_int, to_rgb
+from assistant.viz.colours import CATEGORY_COLOURS, room_colour, score_colours, to_hex_int, to_rgb
+from assistant.viz.detections import draw_detection_result
 from assistant.viz.html import external_urls, scene_html
 from assistant.viz.labels import label_object, text_png
 from assistant.viz.scene_view import SceneView, path_name
 from assistant.viz.server import MeshcatServer, ViewerError
 
 __all__ = [
-    "HIT_COLOURS", "MeshcatServer", "SceneView", "ViewerError", "depth_frame_points",
+    "CATEGORY_COLOURS", "HIT_COLOURS", "MeshcatServer", "SceneView", "ViewerError",
+    "depth_frame_points", "draw_detection_result",
     "external_urls", "label_object", "path_name", "room_colour", "scene_html", "score_colours",
     "text_png", "to_hex_int", "to_rgb",
 ]

@@ -31,13 +31,15 @@ def _hit_kind(hit_name: str) -> str:
 
 
 def depth_frame_points(frame, stride: int = 2, max_range_m: float = 6.0,
-                       colour_by: str = "height") -> tuple[np.ndarray, np.ndarray]:
+                       colour_by: str = "height", camera_to_world: np.ndarray | None = None
+                       ) -> tuple[np.ndarray, np.ndarray]:
     """``(points (N, 3), colours (N, 3) in 0–1)`` of a :class:`~assistant.robot.frames.DepthFrame`.
 
     The image is back-projected with its intrinsics (every ``stride``-th pixel, readings up
     to ``max_range_m``; :func:`assistant.perception.cloud.depth_to_points`) and placed by its
     camera mount and ``robot_pose`` in the world frame (a frame with no pose: the floor under
-    the camera at the origin). ``colour_by``: ``"height"`` (viridis over 0–2 m) or ``"hit"``
+    the camera at the origin) — or by ``camera_to_world`` (4×4) when given, e.g. the floor a
+    detector found in a frame of unknown mount. ``colour_by``: ``"height"`` (viridis over 0–2 m) or ``"hit"``
     (simulated frames only: the kind each ray hit, :data:`HIT_COLOURS` — ground truth, for
     looking at, never for perception).
     """
@@ -51,8 +53,12 @@ def depth_frame_points(frame, stride: int = 2, max_range_m: float = 6.0,
                              "colour_by='height' for recorded frames")
     points_cam, _rows = depth_to_points(frame.depth_m, frame.intrinsics, stride=stride,
                                         max_range_m=max_range_m)
-    matrix = (camera_to_base_matrix(frame.mount) if frame.robot_pose is None
-              else camera_to_world_matrix(frame.mount, frame.robot_pose))
+    if camera_to_world is not None:
+        matrix = np.asarray(camera_to_world, dtype=float)
+    elif frame.robot_pose is None:
+        matrix = camera_to_base_matrix(frame.mount)
+    else:
+        matrix = camera_to_world_matrix(frame.mount, frame.robot_pose)
     points = points_cam @ matrix[:3, :3].T + matrix[:3, 3]
     if colour_by == "hit":
         intr = frame.intrinsics

@@ -13,7 +13,7 @@ import numpy as np
 
 from assistant.errors import AssistantError
 
-__all__ = ["NAMED_COLOURS", "Colour", "room_colour", "score_colours", "to_hex_int", "to_rgb"]
+__all__ = ["CATEGORY_COLOURS", "NAMED_COLOURS", "Colour", "room_colour", "score_colours", "to_hex_int", "to_rgb"]
 
 #: Anything :func:`to_rgb` accepts.
 Colour = str | int | tuple[float, float, float]
@@ -30,6 +30,16 @@ NAMED_COLOURS: dict[str, tuple[float, float, float]] = {
     "black": (0.0, 0.0, 0.0),
     "grey": (0.5, 0.5, 0.5),
     "gray": (0.5, 0.5, 0.5),
+}
+
+#: Furniture categories as a detector reports them (``assistant.world.CATEGORIES``), each its
+#: own saturated colour, apart from the floor plane's light blue and the robot's red and yellow.
+CATEGORY_COLOURS: dict[str, tuple[float, float, float]] = {
+    "bed": (0.58, 0.30, 0.85),
+    "couch": (0.15, 0.65, 0.30),
+    "chair": (0.10, 0.35, 0.85),
+    "large table": (0.95, 0.50, 0.05),
+    "small table": (0.85, 0.20, 0.55),
 }
 
 # Hues (degrees) far apart from each other, in the order rooms are listed in a world file;

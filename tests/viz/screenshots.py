@@ -84,3 +84,14 @@ def furniture_colours_seen(image: np.ndarray, world, min_pixels: int = 40) -> li
 def robot_drawn(image: np.ndarray) -> bool:
     """The robot's red body and its yellow heading cone are both visible."""
     return hue_pixels(image, ROBOT_HUE_DEG, 0.6) >= 60 and hue_pixels(image, CONE_HUE_DEG, 0.6) >= 5
+
+
+def colour_pixels(image: np.ndarray, colour, hue_tol_deg: float = 8.0) -> int:
+    """Drawn pixels of ``colour``'s hue (± ``hue_tol_deg``), at least 60 % of its saturation
+    and bright (translucent boxes over the background keep their hue, lose some saturation)."""
+    from matplotlib.colors import rgb_to_hsv
+
+    h, s, _ = rgb_to_hsv(np.asarray(colour, dtype=float))
+    hsv = rgb_to_hsv(image)
+    diff = np.abs((hsv[..., 0] - h + 0.5) % 1.0 - 0.5) * 360.0
+    return int(((diff <= hue_tol_deg) & (hsv[..., 1] >= 0.6 * s) & (hsv[..., 2] > 0.5) & drawn_mask(image)).sum())

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-from screenshots import (BROWSER, drawn_share, furniture_colours_seen,  # noqa: E402
+from screenshots import (BROWSER, colour_pixels, drawn_share, furniture_colours_seen,  # noqa: E402
                          robot_drawn, screenshot)
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -74,7 +74,7 @@ def test_notebooks_are_committed_without_outputs():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", [p.name for p in NOTEBOOKS if p.name not in
-                                  ("explore_world.ipynb", "follow_a_command.ipynb")])
+                                  ("explore_world.ipynb", "follow_a_command.ipynb", "explore_scans.ipynb")])
 @pytest.mark.timeout(900)
 def test_notebook_runs(name, tmp_path, warm_cache):
     out = stdout_of(execute(name, tmp_path))
@@ -106,6 +106,32 @@ def test_explore_world_runs_and_its_scene_renders(tmp_path, warm_cache):
     assert drawn_share(image) > 0.15
     assert len(furniture_colours_seen(image, load_world("apartment"))) >= 2
     assert robot_drawn(image)
+
+
+@pytest.mark.slow
+@needs_browser
+@pytest.mark.timeout(900)
+def test_explore_scans_opens_a_real_frame_and_draws_the_floor_and_furniture(tmp_path, warm_cache, shared_dir):
+    """The scan explorer, choosing a real frame from ../shared/realdata as a person would, prints
+    the floor and what was found, and its 3D page shows the floor plane and the furniture boxes
+    in their category colours."""
+    from assistant.viz import CATEGORY_COLOURS
+    from assistant.viz.detections import FLOOR_COLOUR
+    from tests.viz.conftest import page_commands
+
+    out = stdout_of(execute("explore_scans.ipynb", tmp_path))
+    assert "real sunrgbd_kv2_mmdet3d/000001_depth.png" in out and "floor: camera" in out
+    found = [line.split()[0] + (" table" if line.split()[1] == "table" else "")
+             for line in out.splitlines() if line.startswith("  ") and " at (" in line and "unknown" not in line]
+    page = tmp_path / "explore_scans.html"
+    drawn = {c.get("path", "") for c in page_commands(page.read_text())}
+    assert "/meshcat/scan/scan/floor/box" in drawn
+    assert sum(p.startswith("/meshcat/scan/scan/furniture/") and p.endswith("/box") for p in drawn) == len(found)
+    image = screenshot(page, tmp_path / "shot.png", tmp_path / "profile")
+    assert drawn_share(image) > 0.15
+    assert colour_pixels(image, FLOOR_COLOUR) > 300, "the floor plane is seen"
+    for category in found:
+        assert colour_pixels(image, CATEGORY_COLOURS[category]) > 100, f"the {category}'s box is seen"
 
 
 @needs_browser
