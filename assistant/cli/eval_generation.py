@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from assistant.cli.common import emit_json, miss_probability, print_table, progress_for
-from assistant.eval.generation import STUDY_WORLDS
+from assistant.eval.generation import DISSERTATION_TRUE, STUDY_WORLDS
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -126,7 +126,7 @@ def print_summary(s: dict) -> None:
     print(f"every stated relation true: {s['all_relations_true']}/{n} "
           f"(checked by {s['truth_checked_by']}); no repeated phrase: "
           f"{s['no_repeated_phrase']}/{n}; both: {s['true_and_no_repeat']}/"
-          f"{n} (target {n}/{n}; dissertation 43/48)")
+          f"{n} (target {n}/{n}; dissertation {DISSERTATION_TRUE[0]}/{DISSERTATION_TRUE[1]})")
     recovered = "not parsed" if s["recovered_by_parse"] is None else f"{s['recovered_by_parse']}/{n}"
     print(f"support singled out: {s['unique']}/{n} (the generator found no "
           f"true wording that does for {s['flagged_ambiguous']}); meant relations recovered by "

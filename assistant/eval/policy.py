@@ -28,6 +28,13 @@ STUDY_HOMES = ("apartment", "hk-studio", "one-bedroom-house", "two-bedrooms-hous
 TRAINING_LAYOUT = ("training-home", "modified")
 TARGET_MEAN_D_M = 0.3
 DISSERTATION_MEAN_D_M = 0.47
+#: the dissertation's Table 5-1: mean distance d (m) from the final to the expected position, per RDT
+DISSERTATION_D_M = {
+    "move-front-non": 0.55, "move-left-non": 0.03, "move-right-non": 0.03, "robot-left-table": 0.36,
+    "robot-right-table": 0.66, "bed-left-table": 0.20, "bed-right-table": 1.01, "couch-front-table": 0.35,
+    "couch-left-table": 0.08, "couch-right-table": 0.73, "chair-beside-table": 0.53,
+    "room-center-non": 0.91, "wall-front-non": 0.67,
+}
 
 
 def default_layouts() -> list[tuple[str, str]]:
