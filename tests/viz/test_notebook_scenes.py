@@ -79,6 +79,13 @@ def test_notebooks_are_committed_without_outputs():
 def test_notebook_runs(name, tmp_path, warm_cache):
     out = stdout_of(execute(name, tmp_path))
     assert "Traceback" not in out
+    for words in SAYS.get(name, ()):
+        assert words in out, f"{name} does not print {words!r}"
+
+
+#: what a notebook must print (its parts ran to the end)
+SAYS = {"where_is.ipynb": ("the listener ", "followed:"),
+        "results.ipynb": ("sensed ", "oracle ", "median ", "Table 3-6 all:", "mean d ")}
 
 
 @pytest.mark.slow
