@@ -26,8 +26,8 @@ def _cells(cx, cy, length, width, angle):
 
 
 def _detection(category="couch", x=2.0, y=0.5, facing=0.5, length=2.0, width=0.9, height=0.8):
-    return Detection(category, category, x, y, facing, 0.83, _cells(x, y, length, width, facing if facing is not None else 0.0),
-                     height, False, "world")
+    cells = _cells(x, y, length, width, facing if facing is not None else 0.0)
+    return Detection(category, category, x, y, facing, 0.83, cells, height, False, "world")
 
 
 def test_a_box_is_the_footprint_turned_to_the_heading():

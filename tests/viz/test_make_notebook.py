@@ -75,7 +75,8 @@ def test_the_make_notebook_server_is_on_loopback_with_its_token(tmp_path):
     # the recipe as make runs it: $(VENV) is this interpreter's environment, $$ a shell $
     command = server.replace("$(VENV)", str(JUPYTER.parents[1])).replace("$$", "$")
     port = _free_port()
-    env = {**os.environ, "JUPYTER_RUNTIME_DIR": str(tmp_path / "runtime"), "JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
+    env = {**os.environ, "JUPYTER_RUNTIME_DIR": str(tmp_path / "runtime"),
+           "JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
     env.pop("JUPYTER_TOKEN", None)
     log = tmp_path / "server.log"
     with log.open("w") as out:
