@@ -271,11 +271,18 @@ class FurnitureClassifier(ClassifierMixin, BaseEstimator):
 
     def predict_with_confidence(self, X) -> tuple[np.ndarray, np.ndarray]:
         """Subclass per sample and the summed probability of its category (0–1)."""
-        p = self.scores(X)
-        sub = self.classes_[np.argmax(p, axis=1)]
-        cats = np.array([category_of(c) for c in self.classes_])
-        conf = np.array([p[i, cats == category_of(s)].sum() for i, s in enumerate(sub)])
+        sub, conf, _ = self.predict_with_categories(X)
         return sub, conf
+
+    def predict_with_categories(self, X) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+        """Subclass per sample, the summed probability of its category (0–1), and each
+        category's summed probability per sample ({category: (n,)})."""
+        p = self.scores(X)
+        best = np.argmax(p, axis=1)
+        cats = np.array([category_of(c) for c in self.classes_])
+        per_category = {c: p[:, cats == c].sum(axis=1) for c in dict.fromkeys(cats)}
+        conf = np.array([per_category[cats[k]][i] for i, k in enumerate(best)])
+        return self.classes_[best], conf, per_category
 
 
 #: the verifier's say (:func:`verified_category`): the least share of open bearings (knee space

@@ -233,18 +233,23 @@ class FurnitureDetector:
         regrouped parts need) the verifier's say
         (:func:`~assistant.perception.classifiers.verified_category`) — a sample it turns into
         another category gets the verifier's subclass and confidence; ``sample.info["verified"]``
-        records the change."""
-        subs, conf = self.models.classifier.predict_with_confidence(X)
+        records the change; ``sample.info["bed_probability"]`` keeps the larger of the two
+        classifiers' probabilities of a bed."""
+        subs, conf, main_p = self.models.classifier.predict_with_categories(X)
         labels = [(str(a), float(b)) for a, b in zip(subs, conf)]
+        for sample, p in zip(samples, main_p.get("bed", np.zeros(len(samples)))):
+            sample.info["bed_probability"] = float(p)
         verifier = getattr(self.models, "verifier", None)
         if verifier is None or not self.verify:
             return labels
         rows = [i for i, (sub, _) in enumerate(labels) if every or category_of(sub) in ("bed", "couch")]
         if not rows:
             return labels
-        vsubs, vconf = verifier.predict_with_confidence(X[rows])
-        for i, vsub, vc in zip(rows, vsubs, vconf):
+        vsubs, vconf, verifier_p = verifier.predict_with_categories(X[rows])
+        for k, (i, vsub, vc) in enumerate(zip(rows, vsubs, vconf)):
             samples[i].info["checked"] = category_of(str(vsub))
+            samples[i].info["bed_probability"] = max(samples[i].info["bed_probability"],
+                                                     float(verifier_p.get("bed", np.zeros(len(rows)))[k]))
             solid, open_ = X[i, -2], X[i, -1]
             final = verified_category(category_of(labels[i][0]), category_of(str(vsub)), solid, open_)
             if final != category_of(labels[i][0]):
@@ -260,20 +265,10 @@ class FurnitureDetector:
         unknown: list[UnknownItem] = []
         labels = night_stands(samples, labels)
         for sample, (sub, conf) in zip(samples, labels):
+            if self._foot_end_of_bed(sample, category_of(sub)):
+                sub, conf = "bed", float(sample.info.get("bed_probability", 0.0))
             category = category_of(sub)
-            why = None
-            if sample.height_m < self.min_height_m:
-                why = "low"
-            elif category == OTHER:
-                why = "other"
-            elif conf < self.min_confidence:
-                why = "unsure"
-            elif (category in ("bed", "couch") and sample.info.get("checked", category) != category
-                  and range_cut(sample, self.params.samples.max_forward_m)):
-                why = "disputed"  # cut by the range and the verifier reads it otherwise
-            elif "night_stand" not in sample.info and not _has_furniture_surface(
-                    sample.info["shape"], self.tall_m, self.min_surface_share):
-                why = "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+            why = self._why_unknown(sample, category, conf)
             if why is not None:
                 if why != "low":
                     ux, uy = _centre(sample.points[:, :2], None)
@@ -282,7 +277,8 @@ class FurnitureDetector:
                     unknown.append(UnknownItem(category, conf, float(ux), float(uy),
                                                float(sample.height_m), len(sample.cells_xy_m), why))
                 continue
-            facing = self._facing(sample, sub, cam[:2])
+            foot_end = "partial_bed" in sample.info
+            facing = None if foot_end else self._facing(sample, sub, cam[:2])
             cx, cy = _centre(sample.points[:, :2], facing, category, cam[:2])
             area = len(sample.cells_xy_m) * self.params.samples.grid_m ** 2
             coverage = view_coverage(area, category, sample.touches_border) if self.weigh_coverage else 1.0
@@ -294,8 +290,42 @@ class FurnitureDetector:
                 facing = None if facing is None else wrap_angle(facing + pose.theta)
             out.append(Detection(category, sub, float(cx), float(cy), facing, conf, cells,
                                  float(sample.height_m), sample.touches_border, frame_name, coverage,
-                                 bool(conf < self.sure_confidence), beyond))
+                                 bool(conf < self.sure_confidence or foot_end), beyond))
         return out, unknown
+
+    def _foot_end_of_bed(self, sample, category: str) -> bool:
+        """Whether a sample is the foot end of a bed that goes on beyond the sample range: its
+        board joined across its shadow with the mattress strip beyond it (``regroup``), cut by
+        the range, read as a bed or couch by the main classifier and otherwise by the verifier.
+        Neither classifier has seen such a view (a board and a strip of mattress, the rest out
+        of range), but the join is the shape of a bed seen from its foot end: it is reported as
+        a bed, partial (``beyond_range``) and unsure, with the classifiers' bed probability
+        (``sample.info["partial_bed"]`` notes it)."""
+        if (sample.info.get("joined") != "shadow" or category not in ("bed", "couch")
+                or sample.info.get("checked", category) == category
+                or not range_cut(sample, self.params.samples.max_forward_m)):
+            return False
+        sample.info["partial_bed"] = "a board joined across its shadow with what lies beyond, cut by the range"
+        return True
+
+    def _why_unknown(self, sample, category: str, conf: float) -> str | None:
+        """Why a classified sample is not reported as a detection (:class:`UnknownItem`'s
+        ``why``, or "low" for a sample under ``min_height_m``, dropped), or None."""
+        if sample.height_m < self.min_height_m:
+            return "low"
+        if category == OTHER:
+            return "other"
+        if "partial_bed" in sample.info:
+            return None
+        if conf < self.min_confidence:
+            return "unsure"
+        if (category in ("bed", "couch") and sample.info.get("checked", category) != category
+                and range_cut(sample, self.params.samples.max_forward_m)):
+            return "disputed"  # cut by the range and the verifier reads it otherwise
+        if "night_stand" not in sample.info and not _has_furniture_surface(
+                sample.info["shape"], self.tall_m, self.min_surface_share):
+            return "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+        return None
 
     def _facing(self, sample, subclass: str, camera_xy) -> float | None:
         if self.orientation == "linear":
