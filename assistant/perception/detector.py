@@ -8,6 +8,7 @@ camera-floor frame (x forward along the camera's heading, y left, origin under t
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass, field
@@ -23,7 +24,7 @@ from assistant.perception.features import (
     orientation_features,
     shape_descriptor,
 )
-from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame
+from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame, thread_limit
 from assistant.perception.instances import OTHER
 from assistant.perception.regroup import range_cut, regroup
 from assistant.robot.frames import DepthFrame
@@ -184,10 +185,18 @@ class FurnitureDetector:
         ``pose_key`` (any hashable value naming the camera's pose, e.g. a recording's pose id
         or a robot pose that has not changed) reuses the floor found in the last frame with the
         same key as the prediction, checked against this frame's points (``cloud.find_floor``):
-        a camera that has not moved skips the floor search."""
+        a camera that has not moved skips the floor search. The whole analysis runs with
+        ``params.threads`` OpenMP and BLAS threads (``frame.thread_limit``)."""
+        if self.params.threads is None:
+            return self._analyse(frame, use_mount, pose_key)
+        with thread_limit(self.params.threads):
+            return self._analyse(frame, use_mount, pose_key)
+
+    def _analyse(self, frame: DepthFrame, use_mount: bool, pose_key) -> DetectionResult:
         t0 = time.perf_counter()
         previous = self._floors.get(pose_key) if pose_key is not None else None
-        analysis = analyse_frame(frame, self.params, use_mount=use_mount, previous_floor=previous)
+        inner = dataclasses.replace(self.params, threads=None)  # within ``analyse``'s thread limit
+        analysis = analyse_frame(frame, inner, use_mount=use_mount, previous_floor=previous)
         if pose_key is not None and analysis.floor is not None:
             self._floors.pop(pose_key, None)
             self._floors[pose_key] = analysis.floor

@@ -56,16 +56,21 @@ def _ranges(points: np.ndarray, camera_xy: np.ndarray) -> tuple[np.ndarray, np.n
 
 
 def part(sample: FurnitureSample, keep_points: np.ndarray, keep_cells: np.ndarray) -> FurnitureSample:
-    """A new sample of some of ``sample``'s points and cells (normals recomputed later)."""
+    """A new sample of some of ``sample``'s points and cells, with their normals (each point's
+    normal was estimated once, from its neighbours in the whole sample: a surface's, however
+    the samples are then grouped; None if the sample had none yet)."""
     pts = sample.points[keep_points]
+    normals = None if sample.normals is None else sample.normals[keep_points]
     return FurnitureSample(pts, sample.cells_xy_m[keep_cells], float(np.percentile(pts[:, 2], 99)),
-                           sample.touches_border)
+                           sample.touches_border, normals)
 
 
 def joined(a: FurnitureSample, b: FurnitureSample) -> FurnitureSample:
+    """One sample of both samples' points, cells and normals (as in :func:`part`)."""
     pts = np.vstack([a.points, b.points])
+    normals = None if a.normals is None or b.normals is None else np.vstack([a.normals, b.normals])
     return FurnitureSample(pts, np.vstack([a.cells_xy_m, b.cells_xy_m]),
-                           float(np.percentile(pts[:, 2], 99)), a.touches_border or b.touches_border)
+                           float(np.percentile(pts[:, 2], 99)), a.touches_border or b.touches_border, normals)
 
 
 def _board_split(a: FurnitureSample, camera_xy: np.ndarray, level_m: float, p: RegroupParams):
