@@ -22,6 +22,7 @@ from assistant.perception.features import (
     estimate_normals,
     normal_histogram,
     orientation_features,
+    percentiles,
     shape_descriptor,
 )
 from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame, thread_limit
@@ -397,7 +398,8 @@ def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
         _, vecs = np.linalg.eigh(np.cov((xy - xy.mean(axis=0)).T))
         axes = vecs.T
     local = xy @ axes.T
-    lo, hi = np.percentile(local, 2, axis=0), np.percentile(local, 98, axis=0)
+    (lo0, hi0), (lo1, hi1) = percentiles(local[:, 0], (2, 98)), percentiles(local[:, 1], (2, 98))
+    lo, hi = np.array([lo0, lo1]), np.array([hi0, hi1])
     mid = (lo + hi) / 2
     depth = typical_depth_m(category) if facing is not None else None
     if depth and hi[0] - lo[0] < 0.85 * depth:

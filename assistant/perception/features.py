@@ -109,6 +109,30 @@ def orientation_features(points: np.ndarray, normals: np.ndarray,
     return out
 
 
+def percentiles(values: np.ndarray, q) -> np.ndarray | float:
+    """``np.percentile(values, q)`` of a 1-D array with the default linear method, bit for bit,
+    without its checks and general axis handling: one ``np.partition`` at the neighbouring
+    ranks and numpy's own interpolation formula (``_lerp``). ``q`` a number (a float back) or
+    a sequence (an array back). About 5× faster on the few thousand points of a sample, where
+    numpy's general path was half of the shape descriptor's time."""
+    a = np.asarray(values, dtype=float).ravel()
+    qs = np.true_divide(np.atleast_1d(np.asarray(q, dtype=float)), 100)
+    virtual = (len(a) - 1) * qs
+    previous = np.floor(virtual)
+    following = previous + 1
+    above = virtual >= len(a) - 1
+    previous[above] = following[above] = -1
+    previous, following = previous.astype(np.intp), following.astype(np.intp)
+    part = np.partition(a, np.unique(np.concatenate(([0, -1], previous, following))))
+    low, high = part[previous], part[following]
+    gamma = virtual - previous
+    diff = high - low
+    out = low + diff * gamma
+    late = gamma >= 0.5
+    out[late] = (high - diff * (1 - gamma))[late]
+    return float(out[0]) if np.ndim(q) == 0 else out
+
+
 #: length of :func:`shape_descriptor`
 SHAPE_LENGTH = 2 * 20 + 9 + 2
 
@@ -142,9 +166,9 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
     xy = points[:, :2] - points[:, :2].mean(axis=0)
     _, vecs = np.linalg.eigh(np.cov(xy.T))
     along = np.column_stack([xy @ vecs[:, 0], xy @ vecs[:, 1]])  # no (N, 2) × (2, 2) BLAS call
-    lo, hi = np.percentile(along, [2, 98], axis=0)
+    lo, hi = np.column_stack([percentiles(along[:, 0], (2, 98)), percentiles(along[:, 1], (2, 98))])
     ext = hi - lo
-    out[2 * nbins] = float(np.percentile(z, 99))
+    out[2 * nbins] = percentiles(z, 99)
     out[2 * nbins + 1] = float(ext.max())
     out[2 * nbins + 2] = float(ext.min())
     if up.sum() >= 5:
@@ -160,14 +184,14 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
         _, hv = np.linalg.eigh(np.cov(hxy.T))
         line = hxy @ hv[:, 1]
         across = (points[:, :2] - points[high, :2].mean(axis=0)) @ hv[:, 0]
-        line_lo, line_hi = np.percentile(line, [2, 98])
+        line_lo, line_hi = percentiles(line, (2, 98))
         out[2 * nbins + 4] = float(line_hi - line_lo)
-        out[2 * nbins + 5] = float(np.percentile(np.abs(across), 95))
+        out[2 * nbins + 5] = percentiles(np.abs(across), 95)
         out[2 * nbins + 6] = out[2 * nbins + 4] / max(out[2 * nbins + 5], 0.05)
         out[2 * nbins + 7] = out[2 * nbins] - out[2 * nbins + 3]
         # where the tall part stands across the item: at its edge (a chair's back, a couch's,
         # a headboard) or in its middle (a monitor or lamp on a table)
-        across_lo, across_hi = np.percentile(across, [2, 98])
+        across_lo, across_hi = percentiles(across, (2, 98))
         mid = (across_hi + across_lo) / 2
         out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
     surface = out[2 * nbins + 3] if out[2 * nbins + 3] > 0 else 0.9 * out[2 * nbins]
