@@ -19,6 +19,7 @@ import numpy as np
 from assistant.geometry import GridMap, Pose2D, wrap_angle
 from assistant.perception.classifiers import category_of, verified_category
 from assistant.perception.features import (
+    covariance,
     estimate_normals,
     normal_histogram,
     orientation_features,
@@ -365,11 +366,20 @@ def night_stands(samples: list, labels: list, max_gap_m: float = 0.6, max_length
         shape = s.info.get("shape")
         if category_of(sub) != OTHER or shape is None or shape[-2] < min_closed or shape[41] > max_length_m:
             continue
-        gap = min(float(np.min(np.linalg.norm(b[:, None, :] - s.cells_xy_m[None, ::4, :], axis=2))) for b in beds)
+        gap = min(_gap_m(b, s.cells_xy_m[::4], max_gap_m) for b in beds)
         if gap <= max_gap_m:
             s.info["night_stand"] = f"beside a bed, {gap:.2f} m"
             out[i] = ("small table", conf)
     return out
+
+
+def _gap_m(a: np.ndarray, b: np.ndarray, within_m: float) -> float:
+    """The least distance (metres) between two sets of cell centres, or ``inf`` when their
+    bounding boxes already lie more than ``within_m`` apart (no pair can be nearer)."""
+    apart = np.maximum(a.min(axis=0) - b.max(axis=0), b.min(axis=0) - a.max(axis=0))
+    if float(np.hypot(*np.maximum(apart, 0.0))) > within_m:
+        return math.inf
+    return float(np.min(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2)))
 
 
 def _has_furniture_surface(shape: np.ndarray, tall_m: float, min_share: float) -> bool:
@@ -395,11 +405,10 @@ def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
         a = facing
         axes = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
     else:
-        _, vecs = np.linalg.eigh(np.cov((xy - xy.mean(axis=0)).T))
+        _, vecs = np.linalg.eigh(covariance((xy - xy.mean(axis=0)).T))
         axes = vecs.T
     local = xy @ axes.T
-    (lo0, hi0), (lo1, hi1) = percentiles(local[:, 0], (2, 98)), percentiles(local[:, 1], (2, 98))
-    lo, hi = np.array([lo0, lo1]), np.array([hi0, hi1])
+    lo, hi = percentiles(local, (2, 98))
     mid = (lo + hi) / 2
     depth = typical_depth_m(category) if facing is not None else None
     if depth and hi[0] - lo[0] < 0.85 * depth:
