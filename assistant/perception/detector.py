@@ -142,7 +142,9 @@ class FurnitureDetector:
     ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains) —
     they, the samples it calls ``other`` (benches, dressers) and a bed or couch cut by the
     sample range that the verifier reads as something else ("disputed": the item goes on
-    beyond what was seen) are reported as :class:`UnknownItem`; a detection under ``sure_confidence`` is marked ``unsure``;
+    beyond what was seen) are reported as :class:`UnknownItem` — except a bed's foot end joined
+    across its footboard's shadow and cut by the range, a partial bed (:meth:`_foot_end_of_bed`);
+    a detection under ``sure_confidence``, or such a partial bed, is marked ``unsure``;
     ``regroup`` joins a bed cut by its footboard's shadow and splits a night stand off a bed's
     side when the classifier confirms it (:mod:`assistant.perception.regroup`); ``verify``
     lets the models' verifier overrule a bed or couch (``classifiers.verified_category``);
