@@ -162,6 +162,7 @@ def test_a_partial_view_matches_the_box_its_cells_lie_on_though_its_centre_is_fa
     assert _seen_part_on(box, dets[:2], _Same(), identity) is None
 
 
+@pytest.mark.timeout(900)  # trains the detector in the tests' private cache on first use
 def test_the_real_frames_meet_issue_20s_bed_checks_with_the_trained_detector(shared_dir):
     """Issue 20 on the real frames (trained models, cached after the first run): no false bed or
     couch, the three beds in range found, SUN 000001's bed — mostly beyond the range — reported
