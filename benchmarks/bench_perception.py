@@ -44,7 +44,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 DEFAULT_REALDATA = HERE.parent.parent / "shared" / "realdata"
 sys.path.insert(0, str(HERE))
-from perception_reference import ReferenceUnavailable, load as load_reference  # noqa: E402
+from perception_reference import FILED_COMMIT, ReferenceUnavailable, load as load_reference  # noqa: E402
 STAGES = ("cloud", "floor", "samples", "features", "classify")
 
 
@@ -74,12 +74,16 @@ def real_frames(root: Path) -> list:
 
 
 @contextmanager
-def reference_path():
-    """Run the detector's front half and shape descriptor as they were before the speed work."""
+def reference_path(detector=None, commit: str | None = None):
+    """Run the detector's front half and shape descriptor as they were before the speed work
+    — or, with ``commit`` = :data:`FILED_COMMIT` and the ``detector``, the detector as it was
+    when issue 20 was filed: that front half and shape descriptor, no side cues, no verifier,
+    no regrouping, scikit-learn's SVM decision function (the main classifier is today's)."""
     import assistant.perception.detector as detector_module
 
-    ref = load_reference()
+    ref = load_reference(commit) if commit else load_reference()
     ref_frame, ref_features = ref.frame, ref.features
+    filed = commit == FILED_COMMIT
 
     import numpy as np
 
@@ -87,6 +91,8 @@ def reference_path():
 
     def old_shape(points, normals, camera_xy=None, **kw):  # the old descriptor + today's cues
         shape = ref_features.shape_descriptor(points, normals, **kw)
+        if filed:  # no cues then: the main classifier does not read them
+            return np.append(shape, (0.0, 0.0))
         surface = shape[43] if shape[43] > 0 else 0.9 * shape[40]
         return np.append(shape, side_cues(points, surface, camera_xy))
 
@@ -96,10 +102,21 @@ def reference_path():
     saved = detector_module.analyse_frame, detector_module.shape_descriptor
     detector_module.analyse_frame = old_frame
     detector_module.shape_descriptor = old_shape
+    switches = None
+    if filed and detector is not None:
+        classifier = detector.models.classifier
+        switches = (detector.verify, detector.regroup, classifier.__dict__.get("_rbf_decision"))
+        detector.verify = detector.regroup = False
+        classifier.__dict__["_rbf_decision"] = False  # scikit-learn's decision function
     try:
         yield
     finally:
         detector_module.analyse_frame, detector_module.shape_descriptor = saved
+        if switches is not None:
+            detector.verify, detector.regroup, fast = switches
+            detector.models.classifier.__dict__.pop("_rbf_decision", None)
+            if fast is not None:
+                detector.models.classifier.__dict__["_rbf_decision"] = fast
 
 
 def run_once(detector, frame, use_mount: bool, pose_key=None) -> tuple[float, float, dict, dict, list]:
@@ -123,12 +140,12 @@ def p90(values) -> float:
 
 
 def bench(detector, frames: list, use_mount: bool, repeats: int, reference: bool,
-          reuse_floor: bool = False) -> dict:
+          reuse_floor: bool = False, commit: str | None = None) -> dict:
     """Every frame ``repeats`` times (and through the old path when ``reference``); with
     ``reuse_floor`` each frame is its own camera pose (its label the pose key), so its first
     run searches the floor and the later ones reuse it. Wall times are also kept per frame
     size ("W×H")."""
-    new = {"wall": [], "cpu": [], "stage": {}, "stage_cpu": {}, "by_size": {}}
+    new = {"wall": [], "cpu": [], "stage": {}, "stage_cpu": {}, "by_size": {}, "by_size_cpu": {}}
     old = {"wall": [], "cpu": []}
     ratios, differ = [], set()
     for rep in range(repeats):
@@ -143,13 +160,14 @@ def bench(detector, frames: list, use_mount: bool, repeats: int, reference: bool
                     new["wall"].append(wall)
                     size = f"{frame.intrinsics.width}×{frame.intrinsics.height}"
                     new["by_size"].setdefault(size, []).append(wall)
+                    new["by_size_cpu"].setdefault(size, []).append(cpu)
                     new["cpu"].append(cpu)
                     for k, v in stage.items():
                         new["stage"].setdefault(k, []).append(v)
                     for k, v in stage_cpu.items():
                         new["stage_cpu"].setdefault(k, []).append(v)
                 else:
-                    with reference_path():
+                    with reference_path(detector, commit):
                         wall_old, cpu_old, _, _, cats_old = run_once(detector, frame, use_mount)
                     old["wall"].append(wall_old)
                     old["cpu"].append(cpu_old)
@@ -160,7 +178,7 @@ def bench(detector, frames: list, use_mount: bool, repeats: int, reference: bool
     return {"new": new, "old": old, "cpu_ratios": ratios, "differ": sorted(differ)}
 
 
-def report(name: str, frames: list, res: dict, reference: bool) -> None:
+def report(name: str, frames: list, res: dict, reference: bool, old_name: str = "old path") -> None:
     new, old = res["new"], res["old"]
     print(f"\n{name}: {len(frames)} frames × {len(new['wall']) // max(1, len(frames))} runs")
     print(f"  current   wall median {median(new['wall']):6.1f} ms  p90 {p90(new['wall']):6.1f} ms   "
@@ -169,11 +187,13 @@ def report(name: str, frames: list, res: dict, reference: bool) -> None:
              for k in STAGES if k in new["stage"]]
     print("  stages (wall/CPU median ms): " + ", ".join(parts))
     for size, walls in sorted(new["by_size"].items()):
-        print(f"  {size}: {len(walls)} runs, wall median {median(walls):6.1f} ms  p90 {p90(walls):6.1f} ms")
+        cpus = new["by_size_cpu"][size]
+        print(f"  {size}: {len(walls)} runs, wall median {median(walls):6.1f} ms  p90 {p90(walls):6.1f} ms   "
+              f"CPU median {median(cpus):6.1f} ms  p90 {p90(cpus):6.1f} ms")
     if reference:
-        print(f"  old path  wall median {median(old['wall']):6.1f} ms  p90 {p90(old['wall']):6.1f} ms   "
-              f"CPU median {median(old['cpu']):6.1f} ms")
-        print(f"  old/new: wall medians {median(old['wall']) / median(new['wall']):.2f}×, "
+        print(f"  {old_name:9s} wall median {median(old['wall']):6.1f} ms  p90 {p90(old['wall']):6.1f} ms   "
+              f"CPU median {median(old['cpu']):6.1f} ms  p90 {p90(old['cpu']):6.1f} ms")
+        print(f"  {old_name}/new: wall medians {median(old['wall']) / median(new['wall']):.2f}×, "
               f"CPU medians {median(old['cpu']) / median(new['cpu']):.2f}×, "
               f"median per-frame CPU ratio {median(res['cpu_ratios']):.2f}×")
         same = len(frames) - len(res["differ"])
@@ -229,17 +249,23 @@ def main() -> int:
     parser.add_argument("--no-reference", action="store_true", help="time the current code only")
     parser.add_argument("--threads", action="store_true",
                         help="compare 1 and 2 BLAS / OpenMP threads, interleaved, instead")
+    parser.add_argument("--as-filed", action="store_true",
+                        help=f"the old path is the detector as issue 20 was filed ({FILED_COMMIT}: its front "
+                             "half, no cues, verifier or regrouping, scikit-learn's SVM decision), not the "
+                             "code before the speed work")
+    parser.add_argument("--real-only", action="store_true", help="time the real frames only")
     args = parser.parse_args()
+    commit = FILED_COMMIT if args.as_filed else None
     from assistant.perception import FurnitureDetector
 
     load_before = os.getloadavg()
-    sim = simulated_frames(args.views)
+    sim = [] if args.real_only else simulated_frames(args.views)
     real = real_frames(args.realdata) if args.realdata.is_dir() else []
     detector = FurnitureDetector()
     reference = not args.no_reference
     if reference:
         try:
-            load_reference()
+            load_reference(commit) if commit else load_reference()
         except ReferenceUnavailable as exc:
             print(f"old path not timed: {exc}", file=sys.stderr)
             reference = False
@@ -256,11 +282,13 @@ def main() -> int:
             print("real frames, thread settings interleaved:")
             threads_comparison(detector, real, False, args.repeats)
     else:
-        res_sim = bench(detector, sim, True, args.repeats, reference)
-        report("simulated 640×480 frames (robot mount known)", sim, res_sim, reference)
+        old = "as filed" if commit else "old path"
+        if sim:
+            res_sim = bench(detector, sim, True, args.repeats, reference, commit=commit)
+            report("simulated 640×480 frames (robot mount known)", sim, res_sim, reference, old)
         if real:
-            res_real = bench(detector, real, False, args.repeats, reference)
-            report(f"real frames ({args.realdata}, floor searched for)", real, res_real, reference)
+            res_real = bench(detector, real, False, args.repeats, reference, commit=commit)
+            report(f"real frames ({args.realdata}, floor searched for)", real, res_real, reference, old)
             res_reuse = bench(detector, real, False, args.repeats, False, reuse_floor=True)
             report("real frames, floor reused across the runs of each frame (one camera pose)",
                    real, res_reuse, False)

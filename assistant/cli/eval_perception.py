@@ -47,8 +47,9 @@ def realdata_summary_line(summary: dict) -> str:
     for what, t in summary["labelled"].items():
         part = f"{what} {t['correct']}/{t['labelled']}"
         if t["in_range"] < t["labelled"]:
-            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range"
-            part += f"; {t['out_of_range_partial']} beyond it reported as partial)" if t.get("out_of_range_partial") else ")"
+            beyond = t["labelled"] - t["in_range"]
+            part += f" ({t['in_range_correct']}/{t['in_range']} of those mostly within range; "
+            part += f"{t.get('out_of_range_partial', 0)}/{beyond} mostly beyond it reported as a partial {what})"
         parts.append(part)
     parts.append(f"false beds/couches: {summary['false_beds_or_couches_in_negatives']} in the "
                  f"negatives, {summary['false_beds_or_couches_elsewhere']} elsewhere")

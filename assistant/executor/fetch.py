@@ -87,7 +87,6 @@ class FetchTask:
     :attr:`FetchResult.seen`. The task reads objects only through this interface.
     """
 
-
     policies: object | None = None
     view_distance_m: float = 1.8
     standoff_m: float = 0.75
@@ -161,9 +160,8 @@ class FetchTask:
         try:
             result = self._run(plan, reports, out)
         except BudgetSpent:
-            result = FetchResult(ExecutionStatus.TIMEOUT,
-                                 f"the fetch used up its budget of {ctx.max_sim_seconds:.0f} s of robot time",
-                                 **out)
+            spent = f"the fetch used up its budget of {ctx.max_sim_seconds:.0f} s of robot time"
+            result = FetchResult(ExecutionStatus.TIMEOUT, spent, **out)
         result.final_pose = ctx.pose()
         result.sim_seconds = ctx.spent()
         result.distance_m = ctx.distance_m
@@ -183,10 +181,8 @@ class FetchTask:
             # carried out from where the robot is (issue 16): the room it is in, or the one it
             # faces through the nearest opening; "on your left" is said from the start pose
             self._said_from = self.ctx.pose()
-            if plan.nodes and all(n.dynamic for n in plan.nodes):  # only moves: from here
-                room = room_of(self.ctx.world, self.ctx.pose())
-            else:
-                room = room_from_here(self.ctx.world, self.ctx.pose(), plan)
+            only_moves, here = plan.nodes and all(n.dynamic for n in plan.nodes), self.ctx.pose()
+            room = room_of(self.ctx.world, here) if only_moves else room_from_here(self.ctx.world, here, plan)
             if room is None:
                 unused = [w for w in getattr(plan, "unused", []) or []]
                 extra = f" (words not understood: {', '.join(unused)})" if unused else ""
@@ -339,14 +335,17 @@ class FetchTask:
     def _pair_for(self, rdt, rdts, room: str, said_from: Pose2D, looked_again: bool):
         """The chosen (reference, target, fit) for ``rdt`` (or None) and whether the robot has
         now looked again: when nothing fits well, or not what was said ("the desk"), it moves
-        for a better view once before it commits."""
+        for a better view once before it commits; when perception is unsure of the reference or
+        target (attribute ``unsure``), it first looks at that item again from another pose."""
         others = [r for r in rdts if r is not rdt]
         pair = self.chooser.choose_pair(rdt, room, said_from, others, self._said)
         if pair is None:
             return None, looked_again
+        doubtful = [e for e in pair[:2] if e is not None and e.attributes.get("unsure")]
         unsure = pair[2] < self.weak_fit or self._said.fit(pair[1]) < self.weak_description
-        if unsure and not looked_again:
-            self.surveyor.better_view(room, self._toward(rdt, said_from))
+        if (unsure or doubtful) and not looked_again:
+            if not (doubtful and self.surveyor.look_again_at(doubtful[0], self.standoff_m)):
+                self.surveyor.better_view(room, self._toward(rdt, said_from))
             looked_again = True
             pair = self.chooser.choose_pair(rdt, room, said_from, others, self._said) or pair
         return pair, looked_again

@@ -3,7 +3,9 @@
 A fetch looks around when it enters the room; in a room too large to see from its door, or
 when a node names furniture not seen yet, it looks again from the free spot that brings the
 most of the room within perception's reliable range (:meth:`Surveyor.survey`), or from the
-middle of the room or the side the command points to (:meth:`Surveyor.better_view`).
+middle of the room or the side the command points to (:meth:`Surveyor.better_view`). An item
+perception is unsure of is looked at again from another side before a task acts on it
+(:meth:`Surveyor.look_again_at`).
 """
 
 from __future__ import annotations
@@ -15,6 +17,8 @@ import numpy as np
 
 from assistant.executor.context import TaskContext
 from assistant.executor.outcome import ExecutionResult
+from assistant.executor.sensing import entity_centre
+from assistant.executor.viewing import viewing_poses
 from assistant.geometry import Pose2D, polygon_lattice
 
 __all__ = ["Surveyor"]
@@ -96,3 +100,23 @@ class Surveyor:
         moved = self.ctx.go_to((float(cx), float(cy)))
         self.ctx.event("better_view", result=moved)
         self.look_around()
+
+    def look_again_at(self, item, standoff_m: float = 0.75, min_move_m: float = 0.75) -> bool:
+        """Look at ``item`` (a perceived furniture entity perception is unsure of) from another
+        pose: the nearest free viewing pose (``viewing.viewing_poses``, ``standoff_m`` off its
+        edge) at least ``min_move_m`` from where the robot stands, facing the item's centre, one
+        frame perceived there. True when the robot got there and looked."""
+        ctx = self.ctx
+        here = ctx.pose()
+        goals = [g for g in viewing_poses(ctx.world, item, here, ctx.obstacles.occupancy(),
+                                          ctx.perception.furniture(), standoff_m)
+                 if np.hypot(g[0] - here.x, g[1] - here.y) >= min_move_m]
+        for goal in goals[:3]:
+            moved = ctx.go_to(goal[:2], goal[2])
+            if moved.success:
+                ctx.face_point(*entity_centre(item))
+                ctx.event("look_again", item=item.id, category=item.category, result=moved)
+                self.on_frame(ctx.robot.depth_frame(), ctx.pose())
+                return True
+        ctx.event("look_again", item=item.id, category=item.category, result=None)
+        return False

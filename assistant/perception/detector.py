@@ -8,6 +8,7 @@ camera-floor frame (x forward along the camera's heading, y left, origin under t
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass, field
@@ -18,12 +19,14 @@ import numpy as np
 from assistant.geometry import GridMap, Pose2D, wrap_angle
 from assistant.perception.classifiers import category_of, verified_category
 from assistant.perception.features import (
+    covariance,
     estimate_normals,
     normal_histogram,
     orientation_features,
+    percentiles,
     shape_descriptor,
 )
-from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame
+from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame, thread_limit
 from assistant.perception.instances import OTHER
 from assistant.perception.regroup import range_cut, regroup
 from assistant.robot.frames import DepthFrame
@@ -139,7 +142,9 @@ class FurnitureDetector:
     ``min_confidence`` drops samples the classifier is unsure of (clutter, walls' remains) —
     they, the samples it calls ``other`` (benches, dressers) and a bed or couch cut by the
     sample range that the verifier reads as something else ("disputed": the item goes on
-    beyond what was seen) are reported as :class:`UnknownItem`; a detection under ``sure_confidence`` is marked ``unsure``;
+    beyond what was seen) are reported as :class:`UnknownItem` — except a bed's foot end joined
+    across its footboard's shadow and cut by the range, a partial bed (:meth:`_foot_end_of_bed`);
+    a detection under ``sure_confidence``, or such a partial bed, is marked ``unsure``;
     ``regroup`` joins a bed cut by its footboard's shadow and splits a night stand off a bed's
     side when the classifier confirms it (:mod:`assistant.perception.regroup`); ``verify``
     lets the models' verifier overrule a bed or couch (``classifiers.verified_category``);
@@ -184,10 +189,18 @@ class FurnitureDetector:
         ``pose_key`` (any hashable value naming the camera's pose, e.g. a recording's pose id
         or a robot pose that has not changed) reuses the floor found in the last frame with the
         same key as the prediction, checked against this frame's points (``cloud.find_floor``):
-        a camera that has not moved skips the floor search."""
+        a camera that has not moved skips the floor search. The whole analysis runs with
+        ``params.threads`` OpenMP and BLAS threads (``frame.thread_limit``)."""
+        if self.params.threads is None:
+            return self._analyse(frame, use_mount, pose_key)
+        with thread_limit(self.params.threads):
+            return self._analyse(frame, use_mount, pose_key)
+
+    def _analyse(self, frame: DepthFrame, use_mount: bool, pose_key) -> DetectionResult:
         t0 = time.perf_counter()
         previous = self._floors.get(pose_key) if pose_key is not None else None
-        analysis = analyse_frame(frame, self.params, use_mount=use_mount, previous_floor=previous)
+        inner = dataclasses.replace(self.params, threads=None)  # within ``analyse``'s thread limit
+        analysis = analyse_frame(frame, inner, use_mount=use_mount, previous_floor=previous)
         if pose_key is not None and analysis.floor is not None:
             self._floors.pop(pose_key, None)
             self._floors[pose_key] = analysis.floor
@@ -233,18 +246,23 @@ class FurnitureDetector:
         regrouped parts need) the verifier's say
         (:func:`~assistant.perception.classifiers.verified_category`) — a sample it turns into
         another category gets the verifier's subclass and confidence; ``sample.info["verified"]``
-        records the change."""
-        subs, conf = self.models.classifier.predict_with_confidence(X)
+        records the change; ``sample.info["bed_probability"]`` keeps the larger of the two
+        classifiers' probabilities of a bed."""
+        subs, conf, main_p = self.models.classifier.predict_with_categories(X)
         labels = [(str(a), float(b)) for a, b in zip(subs, conf)]
+        for sample, p in zip(samples, main_p.get("bed", np.zeros(len(samples)))):
+            sample.info["bed_probability"] = float(p)
         verifier = getattr(self.models, "verifier", None)
         if verifier is None or not self.verify:
             return labels
         rows = [i for i, (sub, _) in enumerate(labels) if every or category_of(sub) in ("bed", "couch")]
         if not rows:
             return labels
-        vsubs, vconf = verifier.predict_with_confidence(X[rows])
-        for i, vsub, vc in zip(rows, vsubs, vconf):
+        vsubs, vconf, verifier_p = verifier.predict_with_categories(X[rows])
+        for k, (i, vsub, vc) in enumerate(zip(rows, vsubs, vconf)):
             samples[i].info["checked"] = category_of(str(vsub))
+            samples[i].info["bed_probability"] = max(samples[i].info["bed_probability"],
+                                                     float(verifier_p.get("bed", np.zeros(len(rows)))[k]))
             solid, open_ = X[i, -2], X[i, -1]
             final = verified_category(category_of(labels[i][0]), category_of(str(vsub)), solid, open_)
             if final != category_of(labels[i][0]):
@@ -260,20 +278,10 @@ class FurnitureDetector:
         unknown: list[UnknownItem] = []
         labels = night_stands(samples, labels)
         for sample, (sub, conf) in zip(samples, labels):
+            if self._foot_end_of_bed(sample, category_of(sub)):
+                sub, conf = "bed", float(sample.info.get("bed_probability", 0.0))
             category = category_of(sub)
-            why = None
-            if sample.height_m < self.min_height_m:
-                why = "low"
-            elif category == OTHER:
-                why = "other"
-            elif conf < self.min_confidence:
-                why = "unsure"
-            elif (category in ("bed", "couch") and sample.info.get("checked", category) != category
-                  and range_cut(sample, self.params.samples.max_forward_m)):
-                why = "disputed"  # cut by the range and the verifier reads it otherwise
-            elif "night_stand" not in sample.info and not _has_furniture_surface(
-                    sample.info["shape"], self.tall_m, self.min_surface_share):
-                why = "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+            why = self._why_unknown(sample, category, conf)
             if why is not None:
                 if why != "low":
                     ux, uy = _centre(sample.points[:, :2], None)
@@ -282,7 +290,8 @@ class FurnitureDetector:
                     unknown.append(UnknownItem(category, conf, float(ux), float(uy),
                                                float(sample.height_m), len(sample.cells_xy_m), why))
                 continue
-            facing = self._facing(sample, sub, cam[:2])
+            foot_end = "partial_bed" in sample.info
+            facing = None if foot_end else self._facing(sample, sub, cam[:2])
             cx, cy = _centre(sample.points[:, :2], facing, category, cam[:2])
             area = len(sample.cells_xy_m) * self.params.samples.grid_m ** 2
             coverage = view_coverage(area, category, sample.touches_border) if self.weigh_coverage else 1.0
@@ -294,8 +303,42 @@ class FurnitureDetector:
                 facing = None if facing is None else wrap_angle(facing + pose.theta)
             out.append(Detection(category, sub, float(cx), float(cy), facing, conf, cells,
                                  float(sample.height_m), sample.touches_border, frame_name, coverage,
-                                 bool(conf < self.sure_confidence), beyond))
+                                 bool(conf < self.sure_confidence or foot_end), beyond))
         return out, unknown
+
+    def _foot_end_of_bed(self, sample, category: str) -> bool:
+        """Whether a sample is the foot end of a bed that goes on beyond the sample range: its
+        board joined across its shadow with the mattress strip beyond it (``regroup``), cut by
+        the range, read as a bed or couch by the main classifier and otherwise by the verifier.
+        Neither classifier has seen such a view (a board and a strip of mattress, the rest out
+        of range), but the join is the shape of a bed seen from its foot end: it is reported as
+        a bed, partial (``beyond_range``) and unsure, with the classifiers' bed probability
+        (``sample.info["partial_bed"]`` notes it)."""
+        if (sample.info.get("joined") != "shadow" or category not in ("bed", "couch")
+                or sample.info.get("checked", category) == category
+                or not range_cut(sample, self.params.samples.max_forward_m)):
+            return False
+        sample.info["partial_bed"] = "a board joined across its shadow with what lies beyond, cut by the range"
+        return True
+
+    def _why_unknown(self, sample, category: str, conf: float) -> str | None:
+        """Why a classified sample is not reported as a detection (:class:`UnknownItem`'s
+        ``why``, or "low" for a sample under ``min_height_m``, dropped), or None."""
+        if sample.height_m < self.min_height_m:
+            return "low"
+        if category == OTHER:
+            return "other"
+        if "partial_bed" in sample.info:
+            return None
+        if conf < self.min_confidence:
+            return "unsure"
+        if (category in ("bed", "couch") and sample.info.get("checked", category) != category
+                and range_cut(sample, self.params.samples.max_forward_m)):
+            return "disputed"  # cut by the range and the verifier reads it otherwise
+        if "night_stand" not in sample.info and not _has_furniture_surface(
+                sample.info["shape"], self.tall_m, self.min_surface_share):
+            return "no surface"  # a tall thing with no seat, mattress or top: shelf, wardrobe, door
+        return None
 
     def _facing(self, sample, subclass: str, camera_xy) -> float | None:
         if self.orientation == "linear":
@@ -325,11 +368,20 @@ def night_stands(samples: list, labels: list, max_gap_m: float = 0.6, max_length
         shape = s.info.get("shape")
         if category_of(sub) != OTHER or shape is None or shape[-2] < min_closed or shape[41] > max_length_m:
             continue
-        gap = min(float(np.min(np.linalg.norm(b[:, None, :] - s.cells_xy_m[None, ::4, :], axis=2))) for b in beds)
+        gap = min(_gap_m(b, s.cells_xy_m[::4], max_gap_m) for b in beds)
         if gap <= max_gap_m:
             s.info["night_stand"] = f"beside a bed, {gap:.2f} m"
             out[i] = ("small table", conf)
     return out
+
+
+def _gap_m(a: np.ndarray, b: np.ndarray, within_m: float) -> float:
+    """The least distance (metres) between two sets of cell centres, or ``inf`` when their
+    bounding boxes already lie more than ``within_m`` apart (no pair can be nearer)."""
+    apart = np.maximum(a.min(axis=0) - b.max(axis=0), b.min(axis=0) - a.max(axis=0))
+    if float(np.hypot(*np.maximum(apart, 0.0))) > within_m:
+        return math.inf
+    return float(np.min(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2)))
 
 
 def _has_furniture_surface(shape: np.ndarray, tall_m: float, min_share: float) -> bool:
@@ -355,10 +407,10 @@ def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
         a = facing
         axes = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
     else:
-        _, vecs = np.linalg.eigh(np.cov((xy - xy.mean(axis=0)).T))
+        _, vecs = np.linalg.eigh(covariance((xy - xy.mean(axis=0)).T))
         axes = vecs.T
     local = xy @ axes.T
-    lo, hi = np.percentile(local, 2, axis=0), np.percentile(local, 98, axis=0)
+    lo, hi = percentiles(local, (2, 98))
     mid = (lo + hi) / 2
     depth = typical_depth_m(category) if facing is not None else None
     if depth and hi[0] - lo[0] < 0.85 * depth:

@@ -109,6 +109,45 @@ def orientation_features(points: np.ndarray, normals: np.ndarray,
     return out
 
 
+def percentiles(values: np.ndarray, q) -> np.ndarray | float:
+    """``np.percentile(values, q, axis=0)`` with the default linear method, bit for bit, without
+    its checks and general axis handling: one ``np.partition`` at the neighbouring ranks and
+    numpy's own interpolation formula (``_lerp``). ``values`` 1-D, or 2-D for each column at
+    once; ``q`` a number (a float back, or one value per column) or a sequence (an array, one
+    row per percentile). Several times faster on the few thousand points of a sample, where
+    numpy's general path was half of the shape descriptor's time."""
+    a = np.asarray(values, dtype=float)
+    if a.ndim != 2:
+        a = a.ravel()
+    qs = np.true_divide(np.atleast_1d(np.asarray(q, dtype=float)), 100)
+    virtual = (len(a) - 1) * qs
+    previous = np.floor(virtual)
+    following = previous + 1
+    above = virtual >= len(a) - 1
+    previous[above] = following[above] = -1
+    previous, following = previous.astype(np.intp), following.astype(np.intp)
+    part = np.partition(a, np.unique(np.concatenate(([0, -1], previous, following))), axis=0)
+    low, high = part[previous], part[following]
+    gamma = (virtual - previous).reshape((-1,) + (1,) * (a.ndim - 1))
+    diff = high - low
+    out = low + diff * gamma
+    late = np.broadcast_to(gamma >= 0.5, out.shape)
+    out[late] = (high - diff * (1 - gamma))[late]
+    if np.ndim(q) == 0:
+        return float(out[0]) if a.ndim == 1 else out[0]
+    return out
+
+
+def covariance(rows: np.ndarray) -> np.ndarray:
+    """``np.cov(rows)`` of a (variables, observations) array, bit for bit (the same copy, mean,
+    product and scaling), without its argument handling; at least two observations."""
+    X = np.array(rows, ndmin=2, dtype=np.float64)
+    X -= X.mean(axis=1)[:, None]
+    c = np.dot(X, X.T.conj())
+    c *= np.true_divide(1, X.shape[1] - 1)
+    return c.squeeze()
+
+
 #: length of :func:`shape_descriptor`
 SHAPE_LENGTH = 2 * 20 + 9 + 2
 
@@ -140,11 +179,13 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
     if up.any():
         out[nbins:2 * nbins] = np.bincount(iz[up], minlength=nbins) / len(points)
     xy = points[:, :2] - points[:, :2].mean(axis=0)
-    _, vecs = np.linalg.eigh(np.cov(xy.T))
-    along = np.column_stack([xy @ vecs[:, 0], xy @ vecs[:, 1]])  # no (N, 2) × (2, 2) BLAS call
-    lo, hi = np.percentile(along, [2, 98], axis=0)
-    ext = hi - lo
-    out[2 * nbins] = float(np.percentile(z, 99))
+    _, vecs = np.linalg.eigh(covariance(xy.T))
+    # the extents along the principal axes and the top, from one partition of three columns
+    # (no (N, 2) × (2, 2) BLAS call)
+    (lo0, lo1, _), (hi0, hi1, _), (_, _, top) = percentiles(
+        np.column_stack([xy @ vecs[:, 0], xy @ vecs[:, 1], z]), (2, 98, 99))
+    ext = np.array([hi0 - lo0, hi1 - lo1])
+    out[2 * nbins] = float(top)
     out[2 * nbins + 1] = float(ext.max())
     out[2 * nbins + 2] = float(ext.min())
     if up.sum() >= 5:
@@ -157,17 +198,18 @@ def shape_descriptor(points: np.ndarray, normals: np.ndarray, height_max_m: floa
     high = z > 0.75 * out[2 * nbins]
     if high.sum() >= 5:
         hxy = points[high, :2] - points[high, :2].mean(axis=0)
-        _, hv = np.linalg.eigh(np.cov(hxy.T))
+        _, hv = np.linalg.eigh(covariance(hxy.T))
         line = hxy @ hv[:, 1]
         across = (points[:, :2] - points[high, :2].mean(axis=0)) @ hv[:, 0]
-        line_lo, line_hi = np.percentile(line, [2, 98])
+        line_lo, line_hi = percentiles(line, (2, 98))
+        (_, across_lo), (depth, _), (_, across_hi) = percentiles(
+            np.column_stack([np.abs(across), across]), (2, 95, 98))
         out[2 * nbins + 4] = float(line_hi - line_lo)
-        out[2 * nbins + 5] = float(np.percentile(np.abs(across), 95))
+        out[2 * nbins + 5] = float(depth)
         out[2 * nbins + 6] = out[2 * nbins + 4] / max(out[2 * nbins + 5], 0.05)
         out[2 * nbins + 7] = out[2 * nbins] - out[2 * nbins + 3]
         # where the tall part stands across the item: at its edge (a chair's back, a couch's,
         # a headboard) or in its middle (a monitor or lamp on a table)
-        across_lo, across_hi = np.percentile(across, [2, 98])
         mid = (across_hi + across_lo) / 2
         out[2 * nbins + 8] = abs(float(mid)) / max(out[2 * nbins + 5], 0.05)
     surface = out[2 * nbins + 3] if out[2 * nbins + 3] > 0 else 0.9 * out[2 * nbins]

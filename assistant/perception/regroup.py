@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from assistant.perception.features import percentiles
 from assistant.perception.samples import FurnitureSample
 
 
@@ -56,16 +57,21 @@ def _ranges(points: np.ndarray, camera_xy: np.ndarray) -> tuple[np.ndarray, np.n
 
 
 def part(sample: FurnitureSample, keep_points: np.ndarray, keep_cells: np.ndarray) -> FurnitureSample:
-    """A new sample of some of ``sample``'s points and cells (normals recomputed later)."""
+    """A new sample of some of ``sample``'s points and cells, with their normals (each point's
+    normal was estimated once, from its neighbours in the whole sample: a surface's, however
+    the samples are then grouped; None if the sample had none yet)."""
     pts = sample.points[keep_points]
-    return FurnitureSample(pts, sample.cells_xy_m[keep_cells], float(np.percentile(pts[:, 2], 99)),
-                           sample.touches_border)
+    normals = None if sample.normals is None else sample.normals[keep_points]
+    return FurnitureSample(pts, sample.cells_xy_m[keep_cells], percentiles(pts[:, 2], 99),
+                           sample.touches_border, normals)
 
 
 def joined(a: FurnitureSample, b: FurnitureSample) -> FurnitureSample:
+    """One sample of both samples' points, cells and normals (as in :func:`part`)."""
     pts = np.vstack([a.points, b.points])
+    normals = None if a.normals is None or b.normals is None else np.vstack([a.normals, b.normals])
     return FurnitureSample(pts, np.vstack([a.cells_xy_m, b.cells_xy_m]),
-                           float(np.percentile(pts[:, 2], 99)), a.touches_border or b.touches_border)
+                           percentiles(pts[:, 2], 99), a.touches_border or b.touches_border, normals)
 
 
 def _board_split(a: FurnitureSample, camera_xy: np.ndarray, level_m: float, p: RegroupParams):
@@ -93,7 +99,7 @@ def _board_split(a: FurnitureSample, camera_xy: np.ndarray, level_m: float, p: R
     else:
         far, near = a, None
     r, _ = _ranges(a.points, camera_xy)
-    return far, near, float(np.percentile(a.points[far_pts, 2], 95)), float(r.max())
+    return far, near, percentiles(a.points[far_pts, 2], 95), float(r.max())
 
 
 def _cell_area(s: FurnitureSample) -> float:
@@ -113,20 +119,22 @@ def shadow_candidates(samples: list[FurnitureSample], camera_xyz: np.ndarray, su
     height = float(camera_xyz[2])
     out = []
     geo = [_ranges(s.points, cam) for s in samples]
+    # each sample's range and bearing percentiles, once: (range 2nd, 98th; bearing 2nd, 98th)
+    spans = [(*percentiles(r, (2, 98)), *percentiles(a, (2, 98))) for r, a in geo]
     for ib, b in enumerate(samples):
         rb, ab = geo[ib]
-        hb = surfaces[ib] if surfaces[ib] > 0 else float(np.percentile(b.points[:, 2], 95))
-        b_lo, b_hi = np.percentile(ab, [5, 95])
-        near_b = float(np.percentile(rb, 2))
-        if float(np.percentile(rb, 98)) - near_b > p.max_strip_depth_m or hb >= height:
+        hb = surfaces[ib] if surfaces[ib] > 0 else percentiles(b.points[:, 2], 95)
+        near_b, far_b = spans[ib][:2]
+        if far_b - near_b > p.max_strip_depth_m or hb >= height:
             continue
+        b_lo, b_hi = percentiles(ab, (5, 95))
         for ia, a in enumerate(samples):
             if ia == ib:
                 continue
-            ra, aa = geo[ia]
-            if float(np.percentile(ra, 98)) > near_b:
+            _, ra98, aa2, aa98 = spans[ia]
+            if ra98 > near_b:
                 continue
-            overlap = np.mean((ab >= np.percentile(aa, 2)) & (ab <= np.percentile(aa, 98)))
+            overlap = np.mean((ab >= aa2) & (ab <= aa98))
             if overlap < p.min_bearing_overlap or b_hi - b_lo <= 0:
                 continue
             split = _board_split(a, cam, hb - p.board_below_m, p)

@@ -12,7 +12,10 @@ views that named the track's category. A track the robot looks straight at
 (its cells in view) without seeing it loses support and is dropped once it has been missed more
 often than seen: furniture moved without telling the robot disappears from the model. A track's
 position (attributes ``x``, ``y``) is the weighted median of the detector's centre
-estimates, which are better than the centroid of the cells seen from one side.
+estimates, which are better than the centroid of the cells seen from one side. A track whose
+category no view named with confidence (each such detection ``unsure``) carries the attribute
+``unsure``: a task looks at it again from another pose before acting on it; one sure view
+of that category clears it.
 """
 
 from __future__ import annotations
@@ -44,7 +47,8 @@ def _largest_footprint_m2(category: str) -> float:
 class _Seen:
     """One detection a track absorbed: its cells, weight and what it said. ``partial``: the
     view ran out of the image, so it showed part of the item; ``merged``: a view of this item
-    and another, kept when a track was split — its cells count, its words do not."""
+    and another, kept when a track was split — its cells count, its words do not; ``unsure``:
+    the detector was unsure of its category (the detection's ``unsure`` attribute)."""
 
     cells: frozenset
     weight: float
@@ -54,17 +58,20 @@ class _Seen:
     xy: tuple[float, float] | None
     partial: bool = False
     merged: bool = False
+    unsure: bool = False
 
 
 @dataclass(frozen=True)
 class _Reading:
-    """What a track's views say of its item: category, subclass, facing (radians or None) and
-    centre (metres, world frame, or None)."""
+    """What a track's views say of its item: category, subclass, facing (radians or None),
+    centre (metres, world frame, or None) and whether every view that named the category was
+    unsure of it (``unsure``: look again before acting on it)."""
 
     category: str
     subclass: str | None
     orientation: float | None
     centre: tuple[float, float] | None
+    unsure: bool = False
 
 
 @dataclass
@@ -103,7 +110,7 @@ def _cut(det: Entity) -> bool:
 
 
 def _attributes(track: _Track, reading: _Reading) -> dict:
-    out = {"seen": track.seen, "subclass": reading.subclass}
+    out = {"seen": track.seen, "subclass": reading.subclass, "unsure": reading.unsure}
     if reading.centre is not None:
         out["x"], out["y"] = reading.centre
     return out
@@ -213,7 +220,7 @@ class EnvironmentModel:
             xy = (float(det.attributes["x"]), float(det.attributes["y"]))
         seen = _Seen(frozenset((int(c[0]), int(c[1])) for c in cells), max(float(det.confidence), 0.05),
                      det.category or det.name, det.orientation_rad, det.attributes.get("subclass"), xy,
-                     partial=_cut(det))
+                     partial=_cut(det), unsure=bool(det.attributes.get("unsure", False)))
         self._add(track, seen)
         track.missed = max(0, track.missed - 1)
 
@@ -300,7 +307,7 @@ class EnvironmentModel:
             centre = (_weighted_median(xy[:, 0], w), _weighted_median(xy[:, 1], w))
         subclass = next((s.subclass for s in reversed(named) if s.subclass), None)
         return _Reading(category, subclass, None if sin == 0.0 and cos == 0.0 else math.atan2(sin, cos),
-                        centre)
+                        centre, bool(named) and all(s.unsure for s in named))
 
     def _split_off(self, track: _Track, cells: np.ndarray) -> _Track:
         """Split ``track`` in two along ``cells`` (the second item's): the detections that lay

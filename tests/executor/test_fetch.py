@@ -210,3 +210,44 @@ def test_a_detector_that_cannot_read_the_frames_sends_the_robot_to_no_other_surf
     detector = SimObjectDetector(["mug"])
     frame = DepthFrame(np.ones((480, 640), dtype=np.float32), CameraIntrinsics.kinect_v1(), CameraMount(1.0, 0.2), None)
     assert not detector.reads(frame) and detector.detect(frame) == []
+
+
+class _UnsureOf(OracleFurniture):
+    """Oracle furniture with perception unsure of the items ``ids`` (the environment model's
+    ``unsure`` attribute)."""
+
+    def __init__(self, world, scene, ids):
+        super().__init__(world, scene)
+        self.ids = set(ids)
+
+    def furniture(self):
+        import dataclasses
+
+        return [dataclasses.replace(e, attributes={**e.attributes, "unsure": True}) if e.id in self.ids else e
+                for e in super().furniture()]
+
+
+def _run_with(world, plan, policies, perception):
+    from assistant.sim import SimRobot
+
+    events = []
+    with SimRobot(world, "original", seed=0) as robot:
+        ctx = TaskContext.start(world, robot, perception, max_sim_seconds=FETCH_BUDGET_S,
+                                on_event=lambda name, data: events.append((name, data)))
+        result = FetchTask(policies).run(ctx, plan)
+    return result, events
+
+
+def test_an_item_perception_is_unsure_of_is_looked_at_again_before_the_robot_acts(apartment, policies):
+    """Issue 20: the reference perception is unsure of (a couch that may be a bed) is looked at
+    again from another pose before the robot drives by it; a sure one is not."""
+    plan = _plan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case")
+    result, events = _run_with(apartment, plan, policies, _UnsureOf(apartment, "original", {"couch_1"}))
+    names = [name for name, _ in events]
+    assert "look_again" in names, names
+    look = next(data for name, data in events if name == "look_again")
+    assert look["item"] == "couch_1" and look["result"] is not None and look["result"].success
+    assert names.index("look_again") < names.index("move_to")  # looked before acting
+    assert result.success and result.target_furniture["id"] == "coffeetable_1"
+    _, sure_events = _run_with(apartment, plan, policies, OracleFurniture(apartment, "original"))
+    assert "look_again" not in [name for name, _ in sure_events]

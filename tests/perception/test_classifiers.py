@@ -97,3 +97,24 @@ def test_the_verifier_overrules_a_bed_or_couch_only_with_the_side_cue_agreeing()
     assert verified_category("couch", "small table", solid=0.86, open_=0.07) == "small table"
     assert verified_category("chair", "other", solid=1.0, open_=0.0) == "chair"  # only beds and couches
     assert verified_category("bed", "couch", solid=1.0, open_=0.0) == "bed"
+
+
+def test_the_gaussian_svms_decision_values_come_from_one_matrix_product_as_scikit_learn_gives_them(
+        tiny_models, tiny_database):
+    """Issue 20 (speed): ``RBFDecision`` gives the one-vs-rest values of the pipeline's
+    ``decision_function`` (to single precision's rounding) from the support vectors in one
+    product, with the same classes; the classifier's scores go through it."""
+    from assistant.perception.classifiers import RBFDecision
+    from assistant.perception.models import classifier_input
+
+    clf = tiny_models.classifier
+    X = classifier_input(tiny_database)
+    fast = RBFDecision.of(clf.estimator_)
+    assert fast is not None
+    reference = clf.estimator_.decision_function(X)
+    assert np.allclose(fast(X), reference, rtol=0, atol=1e-4)
+    assert np.array_equal(clf.classes_[np.argmax(reference, axis=1)], clf.predict_with_confidence(X)[0])
+    assert isinstance(clf.__dict__.get("_rbf_decision"), RBFDecision)  # the scores went through it
+    assert RBFDecision.of(FurnitureClassifier("lsvm").fit(*toy(n=5)).estimator_) is None
+    two = FurnitureClassifier("gsvm").fit(*toy(n=5))
+    assert RBFDecision.of(two.estimator_) is None  # two classes: scikit-learn's own values

@@ -294,3 +294,25 @@ def test_the_two_couches_of_the_two_bedroom_house_are_seen_as_two():
     far, near = sorted(big, key=lambda s: -s.footprint_centre_xy[0])
     assert far.footprint_centre_xy[0] == pytest.approx(3.5, abs=0.3)
     assert near.footprint_centre_xy[0] < far.footprint_centre_xy[0] - 1.0
+
+
+def test_percentiles_are_numpys_bit_for_bit():
+    """Issue 20 (speed): the shape descriptor's, the centre's and the regrouping's percentiles
+    come from ``features.percentiles`` — numpy's linear percentiles, the same bits, also per
+    column — and its covariances from ``features.covariance`` (``np.cov``'s bits)."""
+    from assistant.perception.features import covariance, percentiles
+
+    rng = np.random.default_rng(0)
+    for n in [*range(1, 40), 257, 1500]:
+        a = rng.normal(size=n) * rng.uniform(0.01, 10)
+        if n % 3 == 0:
+            a = np.round(a, 1)  # ties
+        for q in (0, 2, 5, 37.5, 95, 98, 99, 100):
+            value = percentiles(a, q)
+            assert isinstance(value, float) and value == np.percentile(a, q)
+        assert np.array_equal(percentiles(a, (2, 98)), np.percentile(a, [2, 98]))
+        if n > 1:
+            columns = np.column_stack([a, a[::-1] * 3.0, np.sort(a)])
+            assert np.array_equal(percentiles(columns, (2, 95, 98, 99)), np.percentile(columns, [2, 95, 98, 99], axis=0))
+            assert np.array_equal(percentiles(columns, 98), np.percentile(columns, 98, axis=0))
+            assert np.array_equal(covariance(columns[:, :2].T), np.cov(columns[:, :2].T))

@@ -42,6 +42,26 @@ def test_category_votes_and_moved_furniture_is_forgotten(apartment):
     assert model.furniture() == []
 
 
+def test_an_item_only_seen_unsure_is_unsure_until_a_sure_view_names_it(apartment):
+    """Issue 20: the detector's ``unsure`` flag reaches the fused entity, so a task can look
+    again before acting on it; one sure view of the same category clears it."""
+    import dataclasses
+
+    model = EnvironmentModel(apartment)
+
+    def unsure(entity):
+        return dataclasses.replace(entity, attributes={**entity.attributes, "unsure": True})
+
+    model.update([unsure(seen(model, 4.5, 3.0, 2.0, 1.4, "bed", 0.0, 0.6)), seen(model, 4.5, 5.0, 0.6, 0.6, "chair")])
+    by_category = {e.category: e for e in model.furniture()}
+    assert by_category["bed"].attributes["unsure"] is True
+    assert by_category["chair"].attributes["unsure"] is False
+    model.update([unsure(seen(model, 4.5, 3.0, 2.0, 1.4, "bed", 0.0, 0.65))])
+    assert next(e for e in model.furniture() if e.category == "bed").attributes["unsure"] is True
+    model.update([seen(model, 4.5, 3.0, 2.0, 1.4, "bed", 0.0, 0.9)])
+    assert next(e for e in model.furniture() if e.category == "bed").attributes["unsure"] is False
+
+
 def test_a_detection_on_another_grid_is_regridded(apartment):
     from assistant.geometry import GridMap
 
