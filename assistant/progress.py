@@ -3,13 +3,16 @@
 Two kinds of waits: a counted stage ("fetch trials 12/128") and a step of unknown length
 ("training the language models on first use"). :class:`TerminalProgress` shows both with
 ``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds ticking
-every half second so a long step never looks hung. :class:`LineProgress` writes one line per
-call (a log, a pipe); :func:`quiet` says nothing.
+every half second so a long step never looks hung; :func:`quiet` says nothing.
 
-Library code reports long steps through :func:`working` and :func:`counted`, which use the
-process's hook: by default a terminal display when stderr is a terminal and nothing otherwise;
-the command line sets it once (:func:`set_hook`): quiet with ``--json``. The hook has the
-signature of :class:`assistant.eval.progress.Progress`: ``hook(what, done=None, total=None)``.
+**The rule, kept here only** (:func:`hook_for`): progress is shown when stderr is a terminal,
+and is quiet with ``--json`` (its stdout is read by a program) or when stderr is not a terminal
+(a pipe, a log, a test: no bars or control characters in them). The command line applies it
+once per command (:func:`set_hook`); every evaluation's progress callback comes from it too
+(``assistant.cli.common.progress_for``). Library code reports long steps through
+:func:`working` and :func:`counted`, which use the process's hook (by default the rule applied to
+the process's stderr). A hook has the signature of :class:`assistant.eval.progress.Progress`:
+``hook(what, done=None, total=None)``.
 """
 
 from __future__ import annotations
@@ -30,22 +33,6 @@ TICK_S = 0.5
 
 def quiet(what: str, done: int | None = None, total: int | None = None) -> None:
     """A hook that says nothing."""
-
-
-class LineProgress:
-    """One line per call on ``stream`` (stderr): ``what``, then ``(done/total)`` if counted."""
-
-    def __init__(self, stream=None):
-        self.stream = stream
-
-    def __call__(self, what: str, done: int | None = None, total: int | None = None) -> None:
-        stream = self.stream or sys.stderr
-        count = "" if done is None else f" ({done}/{total})" if total is not None else f" ({done})"
-        stream.write(f"{what}{count}\n")
-        stream.flush()
-
-    def close(self) -> None:
-        pass
 
 
 class TerminalProgress:
@@ -126,26 +113,26 @@ def set_hook(hook: Hook | None) -> None:
     _hook = hook
 
 
-def current_hook() -> Hook:
-    if _hook is not None:
-        return _hook
+def is_terminal(stream) -> bool:
+    """Whether ``stream`` is a terminal a person watches (False for a closed or replaced one)."""
     try:
-        terminal = sys.stderr.isatty()
-    except (AttributeError, ValueError):  # a closed or replaced stderr
-        terminal = False
-    return TerminalProgress() if terminal else quiet
-
-
-def for_terminal(json_output: bool, stream=None) -> Hook:
-    """The hook a command uses: quiet with ``--json``; tqdm on a terminal; lines otherwise."""
-    if json_output:
-        return quiet
-    stream = stream or sys.stderr
-    try:
-        terminal = stream.isatty()
+        return bool(stream.isatty())
     except (AttributeError, ValueError):
-        terminal = False
-    return TerminalProgress(stream) if terminal else LineProgress(stream)
+        return False
+
+
+def hook_for(json_output: bool = False, stream=None) -> Hook:
+    """The one rule for where progress goes (see the module): a :class:`TerminalProgress` on
+    ``stream`` (stderr) when it is a terminal; :func:`quiet` with ``json_output`` or when it is not."""
+    stream = stream or sys.stderr
+    if json_output or not is_terminal(stream):
+        return quiet
+    return TerminalProgress(stream)
+
+
+def current_hook() -> Hook:
+    """The hook :func:`set_hook` gave, else the rule applied to stderr."""
+    return _hook if _hook is not None else hook_for()
 
 
 @contextlib.contextmanager
@@ -153,13 +140,10 @@ def working(what: str) -> Iterator[None]:
     """Report a step of unknown length (``with working("training the tagger"): …``); on a
     terminal its elapsed time ticks until it ends."""
     hook = current_hook()
-    started = time.monotonic()
     hook(what)
     try:
         yield
     finally:
-        if isinstance(hook, LineProgress):
-            hook(f"{what}: done in {time.monotonic() - started:.1f} s")
         if hasattr(hook, "close"):
             hook.close()  # a terminal's bar stays, showing the time it took
 
@@ -195,11 +179,7 @@ class Heartbeat:
         self._thread: threading.Thread | None = None
 
     def start(self) -> "Heartbeat":
-        try:
-            terminal = self.stream.isatty()
-        except (AttributeError, ValueError):
-            terminal = False
-        if terminal:
+        if is_terminal(self.stream):
             self._thread = threading.Thread(target=self._run, name="progress-heartbeat", daemon=True)
             self._thread.start()
         return self

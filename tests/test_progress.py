@@ -1,5 +1,5 @@
-"""Progress of long work: tqdm on a terminal (a ticking clock for steps without a count), lines
-in a log, nothing with --json."""
+"""Progress of long work: tqdm on a terminal (a ticking clock for steps without a count); nothing
+with --json or when stderr is not a terminal."""
 
 from __future__ import annotations
 
@@ -39,13 +39,13 @@ def test_a_counted_stage_shows_how_far():
     assert "policy models" in screen.getvalue() and "4/4" in screen.getvalue()
 
 
-def test_json_is_quiet_and_a_log_gets_lines():
-    assert progress.for_terminal(json_output=True, stream=FakeTerminal()) is progress.quiet
-    log = io.StringIO()
-    hook = progress.for_terminal(json_output=False, stream=log)
-    hook("fetch trials", 2, 8)
-    assert log.getvalue() == "fetch trials (2/8)\n"
-    assert isinstance(progress.for_terminal(False, FakeTerminal()), progress.TerminalProgress)
+def test_the_rule_shows_progress_on_a_terminal_only_and_never_with_json():
+    assert isinstance(progress.hook_for(False, FakeTerminal()), progress.TerminalProgress)
+    assert progress.hook_for(True, FakeTerminal()) is progress.quiet  # --json
+    assert progress.hook_for(False, io.StringIO()) is progress.quiet  # a pipe or a log
+    closed = io.StringIO()
+    closed.close()  # isatty() raises on a closed stream
+    assert progress.hook_for(False, closed) is progress.quiet
 
 
 def test_the_default_outside_a_terminal_says_nothing(capsys):

@@ -56,6 +56,11 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def json_output(args: argparse.Namespace) -> bool:
+    """Whether the command prints JSON: its ``--json``, or an evaluation's (``eval NAME … --json``)."""
+    return bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
+
+
 def main(argv: list[str] | None = None) -> int:
     limit_openmp_threads()
     from assistant.cli.common import join_negative_values
@@ -65,12 +70,11 @@ def main(argv: list[str] | None = None) -> int:
     import assistant.progress as progress
 
     # training on first use shows its progress on a terminal; quiet with --json or in a pipe
-    json_output = bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
-    terminal = not json_output and sys.stderr.isatty()
-    progress.set_hook(progress.TerminalProgress() if terminal else progress.quiet)
+    hook = progress.hook_for(json_output(args))
+    progress.set_hook(hook)
     # a command that works a while before it prints says so (not the interactive ones)
     heartbeat = progress.Heartbeat(f"assistant {args.command}")
-    if terminal and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
+    if hook is not progress.quiet and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
         heartbeat.start()
     try:
         return int(args.handler(args) or 0)

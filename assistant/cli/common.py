@@ -277,12 +277,12 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
 
 
 def progress_for(args: argparse.Namespace):
-    """The progress hook of one command (:class:`assistant.eval.progress.Progress`): quiet with
-    ``--json`` (its stdout is read by programs and its stderr often shown beside it); a tqdm bar
-    per stage on a terminal; one line per step on stderr otherwise (a log)."""
-    from assistant.progress import for_terminal
+    """The progress hook of one command (:class:`assistant.eval.progress.Progress`), by the one
+    rule of :func:`assistant.progress.hook_for`: a tqdm bar per stage when stderr is a terminal;
+    quiet with ``--json`` or when stderr is not a terminal."""
+    from assistant.progress import hook_for
 
-    return for_terminal(bool(getattr(args, "json", False)))
+    return hook_for(bool(getattr(args, "json", False)))
 
 
 def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:
