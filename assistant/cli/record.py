@@ -51,9 +51,8 @@ def run(args: argparse.Namespace) -> int:
     scene = (spec.argument.partition(":")[2] if spec.scheme == "sim" else "") or args.scene
     if args.fetch and not world:
         raise AssistantError("say which home the fetch is in: --world NAME")
-    options = {"world": world or "apartment", "scene": scene, "seed": args.seed} if spec.scheme == "sim" else {}
-    if spec.scheme == "sim" and args.fetch:
-        options["noise"] = True  # as the fetch command drives the simulator
+    # the home options (each robot takes those it needs); noisy odometry as the fetch command drives
+    options = {"world": world, "scene": scene, "seed": args.seed, "noise": bool(args.fetch)}
     metadata = {"spec": str(spec), "world": world or "", "scene": scene if world else "",
                 "task": f"fetch: {args.fetch}" if args.fetch else f"look around, a frame every {args.step_deg:g}°"}
     if args.fetch:
