@@ -13,7 +13,7 @@ import importlib
 import sys
 
 from assistant.errors import AssistantError
-from assistant.runtime import limit_openmp_threads
+from assistant.runtime import limit_openmp_threads, prepare_to_exit
 
 #: Command modules under ``assistant.cli``, in the order ``--help`` lists them.
 COMMAND_MODULES = (
@@ -89,3 +89,13 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         heartbeat.stop()
         progress.set_hook(None)
+
+
+def program() -> int:
+    """The ``assistant`` program (the console script and ``python -m assistant``): :func:`main`
+    on the process's arguments, then :func:`~assistant.runtime.prepare_to_exit`, so the process
+    ends at once after its last line instead of spending a second or more freeing its models."""
+    try:
+        return main()
+    finally:
+        prepare_to_exit()
