@@ -2,7 +2,7 @@
 
 Two kinds of waits: a counted stage ("fetch trials 12/128") and a step of unknown length
 ("training the language models on first use"). :class:`TerminalProgress` shows both with
-``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds ticking
+``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds — redrawn
 every half second so a long step never looks hung; :func:`quiet` says nothing.
 
 **The rule, kept here only** (:func:`hook_for`): progress is shown when stderr is a terminal,
@@ -18,6 +18,7 @@ the process's stderr). A hook has the signature of :class:`assistant.eval.progre
 from __future__ import annotations
 
 import contextlib
+import os
 import sys
 import threading
 import time
@@ -36,7 +37,8 @@ def quiet(what: str, done: int | None = None, total: int | None = None) -> None:
 
 
 class TerminalProgress:
-    """tqdm on a terminal: a bar per counted stage, a ticking clock for an uncounted step.
+    """tqdm on a terminal: a bar per counted stage, a clock for an uncounted step; both redrawn
+    every :data:`TICK_S` so their elapsed time ticks even while one step takes long.
 
     A call with a new ``what`` ends the previous stage (its bar stays on screen, finished); a
     call with the same ``what`` moves its bar. :meth:`close` ends the last one.
@@ -62,8 +64,7 @@ class TerminalProgress:
                                  dynamic_ncols=True, mininterval=0.2,
                                  bar_format=None if counted else "{desc} … {elapsed}")
                 _count_bar(+1)
-                if not counted:
-                    self._start_ticker()
+                self._start_ticker()  # a counted stage's clock ticks too: one step may take long
             if done is not None:
                 self._bar.n = done
                 self._bar.refresh()
@@ -166,29 +167,45 @@ def counted(items: Iterable[T], what: str, total: int | None = None) -> Iterator
             hook.close()
 
 
-class Heartbeat:
-    """For a command that may work a while before it prints: after ``delay_s`` without an end,
-    a terminal line ``what … 00:05`` ticks until :meth:`stop` (then it is erased), so no wait
-    is silent. Does nothing when ``stream`` is not a terminal."""
+def process_age() -> float:
+    """Seconds since this process started (Linux: from /proc; elsewhere 0.0)."""
+    try:
+        with open("/proc/self/stat", encoding="ascii") as stat, open("/proc/uptime", encoding="ascii") as uptime:
+            started_ticks = int(stat.read().rpartition(")")[2].split()[19])  # field 22, after the name
+            now = float(uptime.read().split()[0])
+        return max(0.0, now - started_ticks / os.sysconf("SC_CLK_TCK"))
+    except (OSError, ValueError, IndexError):
+        return 0.0
 
-    def __init__(self, what: str, delay_s: float = 2.0, stream=None):
+
+class Heartbeat:
+    """For a command that may work a while before it prints: once ``delay_s`` have passed since
+    ``since`` (a :func:`time.monotonic` time; default when :meth:`start` is called) without an
+    end, a terminal line ``what … 00:05`` ticks until :meth:`stop` (then it is erased), so no
+    wait is silent. The command line counts from the process's start (:func:`process_age`):
+    Python's start-up and imports take a second or more on a loaded machine. Does nothing when
+    ``stream`` is not a terminal."""
+
+    def __init__(self, what: str, delay_s: float = 2.0, stream=None, since: float | None = None):
         self.what = what
         self.delay_s = delay_s
         self.stream = stream or sys.stderr
+        self.since = since
         self._done = threading.Event()
         self._thread: threading.Thread | None = None
 
     def start(self) -> "Heartbeat":
         if is_terminal(self.stream):
-            self._thread = threading.Thread(target=self._run, name="progress-heartbeat", daemon=True)
+            started = time.monotonic() if self.since is None else self.since
+            self._thread = threading.Thread(target=self._run, args=(started,), name="progress-heartbeat",
+                                            daemon=True)
             self._thread.start()
         return self
 
-    def _run(self) -> None:
+    def _run(self, started: float) -> None:
         from tqdm import tqdm
 
-        started = time.monotonic()
-        if self._done.wait(self.delay_s):
+        if self._done.wait(max(0.0, started + self.delay_s - time.monotonic())):
             return
         bar = None
         while True:
@@ -197,10 +214,10 @@ class Heartbeat:
                     bar.close()
                     bar = None
             else:
-                if bar is None:
+                if bar is None:  # (delay: not drawn before its clock is set to the process's start)
                     bar = tqdm(total=None, desc=self.what, file=self.stream, leave=False, dynamic_ncols=True,
-                               bar_format="{desc} … {elapsed}")
-                    bar.start_t -= time.monotonic() - started  # count from the command's start
+                               bar_format="{desc} … {elapsed}", delay=1e-6)
+                    bar.start_t -= time.monotonic() - started
                 with contextlib.suppress(Exception):
                     bar.refresh()
             if self._done.wait(TICK_S):

@@ -29,6 +29,20 @@ def test_an_uncounted_step_keeps_ticking_on_a_terminal():
     assert "00:01" in later
 
 
+def test_a_counted_stage_keeps_ticking_while_one_step_takes_long():
+    screen = FakeTerminal()
+    hook = progress.TerminalProgress(screen)
+    try:
+        hook("fetch trials", 3, 128)
+        time.sleep(0.3)
+        first = screen.getvalue()
+        time.sleep(1.3)  # one trial takes long: no call in between
+        later = screen.getvalue()
+    finally:
+        hook.close()
+    assert "3/128" in first and len(later) > len(first) and "00:01" in later
+
+
 def test_a_counted_stage_shows_how_far():
     screen = FakeTerminal()
     progress.set_hook(progress.TerminalProgress(screen))
@@ -70,3 +84,12 @@ def test_a_heartbeat_speaks_after_its_delay_and_stands_aside_for_a_progress_line
     assert len(screen.getvalue()) == size  # silent while the other line ticks
     other.close()
     beat.stop()
+
+
+def test_a_heartbeat_can_count_from_an_earlier_start_such_as_the_process_s():
+    screen = FakeTerminal()
+    beat = progress.Heartbeat("assistant parse", delay_s=2.0, stream=screen, since=time.monotonic() - 1.9).start()
+    time.sleep(0.6)
+    beat.stop()
+    assert "assistant parse" in screen.getvalue() and "00:02" in screen.getvalue()  # the clock counts from then
+    assert 0.0 < progress.process_age() < 24 * 3600

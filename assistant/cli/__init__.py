@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import time
 
 from assistant.errors import AssistantError
 from assistant.runtime import limit_openmp_threads, prepare_to_exit
@@ -73,7 +74,8 @@ def main(argv: list[str] | None = None) -> int:
     hook = progress.hook_for(json_output(args))
     progress.set_hook(hook)
     # a command that works a while before it prints says so (not the interactive ones)
-    heartbeat = progress.Heartbeat(f"assistant {args.command}")
+    heartbeat = progress.Heartbeat(f"assistant {args.command}",
+                                   since=time.monotonic() - progress.process_age())  # start-up counts
     if hook is not progress.quiet and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
         heartbeat.start()
     try:
