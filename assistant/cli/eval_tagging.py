@@ -7,6 +7,9 @@ from pathlib import Path
 
 from assistant.cli.common import emit_json, percent, print_table, progress_for, show_report
 
+#: what ``--quick`` stands for (see assistant.cli.eval): two-fold cross-validation on our corpus, no real test files
+QUICK = ("--folds", "2", "--no-test")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--corpus", action="append", metavar="PATH",

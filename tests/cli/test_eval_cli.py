@@ -21,6 +21,7 @@ def test_unknown_evaluation_lists_the_known_ones(capsys):
 
 def test_options_go_to_the_chosen_evaluation(monkeypatch, capsys):
     fake = types.ModuleType("fake_evaluation")
+    fake.QUICK = ()
     fake.add_arguments = lambda parser: parser.add_argument("--rounds", type=int, default=10)
     fake.run = lambda args: print(f"rounds={args.rounds} json={args.json}") or 0
     monkeypatch.setitem(sys.modules, "fake_evaluation", fake)
@@ -33,6 +34,27 @@ def test_an_evaluation_not_built_says_so(monkeypatch, capsys):
     monkeypatch.setitem(eval_cli.EVALUATIONS, "dialogue", "assistant.no_such_package.evaluation")
     assert main(["eval", "dialogue"]) == 2
     assert "not built yet" in capsys.readouterr().err
+
+
+def test_quick_stands_for_the_evaluation_s_small_sample_and_says_so(monkeypatch, capsys):
+    fake = types.ModuleType("fake_evaluation")
+    fake.QUICK = ("--rounds", "1", "--only", "a")
+    fake.add_arguments = lambda parser: (parser.add_argument("--rounds", type=int, default=10),
+                                         parser.add_argument("--only", default=None))
+    fake.run = lambda args: print(f"rounds={args.rounds} only={args.only}") or 0
+    monkeypatch.setitem(sys.modules, "fake_evaluation", fake)
+    monkeypatch.setitem(eval_cli.EVALUATIONS, "grounding", "fake_evaluation")
+    assert main(["eval", "grounding", "--quick"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == "rounds=1 only=a" and "not the reported figures" in out[1]
+    assert main(["eval", "grounding", "--quick", "--rounds", "3", "--json"]) == 0  # a given option wins
+    assert capsys.readouterr().out.strip() == "rounds=3 only=a"  # --json: nothing but the report
+
+
+def test_every_evaluation_has_a_quick_sample_its_parser_accepts():
+    for name in eval_cli.EVALUATIONS:
+        parser, module = eval_cli.build_evaluation_parser(name)
+        assert module.QUICK and parser.parse_args(list(module.QUICK))
 
 
 class FakeTerminal(io.StringIO):
