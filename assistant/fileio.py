@@ -194,3 +194,16 @@ def write_cache(path: str | os.PathLike[str], obj) -> Path:
     private_dir(Path(path).parent)
     return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL),
                               mode=PRIVATE_FILE_MODE)
+
+
+def read_yaml(text: str):
+    """``yaml.safe_load(text)`` for a file a person gave: nesting too deep for the parser (it
+    recurses once per level and hit Python's limit with a traceback) is a ``yaml.YAMLError``
+    too, so a reader's one ``except yaml.YAMLError`` turns every kind of bad YAML into its
+    one-line message."""
+    import yaml
+
+    try:
+        return yaml.safe_load(text)
+    except RecursionError:
+        raise yaml.YAMLError("nested too deeply (hundreds of levels of [ or {)") from None

@@ -37,7 +37,7 @@ from typing import Any
 import yaml
 
 from assistant.errors import DataFileError, UnknownNameError
-from assistant.fileio import atomic_write_text
+from assistant.fileio import atomic_write_text, read_yaml
 from assistant.geometry import Pose2D, angles_close
 from assistant.world.catalogue import load_catalogue
 from assistant.world.sanity import geometry_problems
@@ -198,7 +198,7 @@ def parse_world(text: str, source: str = "<world>") -> World:
     label = Path(source).name if source and not source.startswith("<") else source
     check = _Checker(label)
     try:
-        data = yaml.safe_load(text)
+        data = read_yaml(text)
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f"line {mark.line + 1}" if mark is not None else ""

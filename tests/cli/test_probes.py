@@ -103,3 +103,10 @@ def test_a_pasted_page_is_refused_before_any_work(capsys):
     with pytest.raises(Exception, match="characters, more than"):
         parser.parse("mug " * 250_000)
     assert time.perf_counter() - started < 0.5
+
+
+def test_a_world_file_nested_too_deeply_is_one_line(tmp_path, capsys):
+    deep = tmp_path / "deep.yaml"
+    deep.write_text("rooms: " + "[" * 5000 + "]" * 5000 + "\n")
+    code, out, err = run(["world", str(deep), "--check"], capsys)
+    assert code == 2 and "nested too deeply" in err and len(err.strip().splitlines()) == 1, err
