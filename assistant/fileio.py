@@ -207,3 +207,34 @@ def read_yaml(text: str):
         return yaml.safe_load(text)
     except RecursionError:
         raise yaml.YAMLError("nested too deeply (hundreds of levels of [ or {)") from None
+
+
+def check_readable_file(path: str | os.PathLike[str], what: str = "file", pipes: bool = False) -> os.stat_result:
+    """The ``stat`` of ``path`` if it is a file to read; an ``OSError`` saying what it is
+    otherwise: a folder, a device such as ``/dev/zero`` (endless: reading a world file from it
+    filled 21 GB of memory), a named pipe unless ``pipes`` (opening one nobody writes to waits
+    for ever), or a missing file."""
+    import stat
+
+    info = os.stat(path)  # FileNotFoundError and the like say themselves
+    if stat.S_ISDIR(info.st_mode):
+        raise IsADirectoryError(f"{path} is a folder; give a {what}")
+    if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode):
+        raise OSError(f"{path} is a device, not a {what}")
+    if stat.S_ISFIFO(info.st_mode) and not pipes:
+        raise OSError(f"{path} is a pipe, not a {what}")
+    return info
+
+
+def read_user_text(path: str | os.PathLike[str], max_bytes: int, what: str = "file",
+                   encoding: str = "utf-8-sig") -> str:
+    """The text of a file a person named, read only if it is one (:func:`check_readable_file`)
+    and at most ``max_bytes`` long (checked while reading: a pipe has no size). Raises
+    ``OSError`` (what is wrong, in words) or ``UnicodeDecodeError``."""
+    check_readable_file(path, what)
+    with open(path, "rb") as handle:
+        data = handle.read(max_bytes + 1)
+    if len(data) > max_bytes:
+        raise OSError(f"{path} is over {max_bytes // 1_000_000 or max_bytes} "
+                      f"{'MB' if max_bytes >= 1_000_000 else 'bytes'}; is it really a {what}?")
+    return data.decode(encoding)

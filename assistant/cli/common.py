@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from assistant.errors import AssistantError
+from assistant.fileio import check_readable_file
 
 
 def to_jsonable(value: Any) -> Any:
@@ -48,6 +49,8 @@ def show_report(args, report, print_report) -> int:
 
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
+#: how much of one over-long line is skipped before the batch ends (``/dev/zero`` never ends one)
+MAX_SKIPPED_BYTES = 16 * 2**20
 
 
 def _finite_float(text: str) -> float:
@@ -107,8 +110,13 @@ def _batch_lines(handle):
             return
         number += 1
         if len(raw) > MAX_LINE_BYTES and not raw.endswith(b"\n"):
+            skipped = len(raw)
             while raw and not raw.endswith(b"\n"):  # skip the rest of the long line
+                if skipped > MAX_SKIPPED_BYTES:  # no line end in sight: not a file of requests
+                    raise AssistantError(f"line {number} goes on for over {MAX_SKIPPED_BYTES // 2**20} MiB "
+                                         "without a line end; give a text file with one request per line")
                 raw = handle.readline(MAX_LINE_BYTES)
+                skipped += len(raw)
             yield number, None, f"longer than {MAX_LINE_BYTES} bytes; give one request per line"
             continue
         if number == 1 and raw.startswith(b"\xef\xbb\xbf"):
@@ -133,11 +141,11 @@ def run_batch(
     Blank lines are skipped.
     """
     try:
+        if path != "-":
+            check_readable_file(path, "file with one request per line", pipes=True)  # <(command) is fine
         handle_file = sys.stdin.buffer if path == "-" else open(path, "rb")
     except OSError as error:
-        raise AssistantError(f"cannot read batch file {path}: {error.strerror}") from error
-    if path != "-" and os.path.isdir(path):
-        raise AssistantError(f"batch file {path} is a folder; give a file with one request per line")
+        raise AssistantError(f"cannot read batch file {path}: {error.strerror or error}") from error
     with handle_file:
         for number, line, problem in _batch_lines(handle_file):
             if problem is None:

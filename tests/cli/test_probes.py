@@ -110,3 +110,27 @@ def test_a_world_file_nested_too_deeply_is_one_line(tmp_path, capsys):
     deep.write_text("rooms: " + "[" * 5000 + "]" * 5000 + "\n")
     code, out, err = run(["world", str(deep), "--check"], capsys)
     assert code == 2 and "nested too deeply" in err and len(err.strip().splitlines()) == 1, err
+
+
+@pytest.mark.parametrize("argv", [["world", "/dev/zero", "--check"], ["world", "FIFO", "--check"],
+                                  ["parse", "--batch", "/dev/zero", "--json"], ["fetch", "--batch", "/dev/zero", "--json"]])
+def test_endless_files_are_refused_before_reading(argv, tmp_path, capsys):
+    """``world /dev/zero`` read until it filled 21 GB; ``--batch /dev/zero`` never ended; a named
+    pipe nobody writes to waited for ever."""
+    import os
+
+    fifo = tmp_path / "fifo.yaml"
+    os.mkfifo(fifo)
+    argv = [str(fifo) if a == "FIFO" else a for a in argv]
+    code, out, err = run(argv, capsys)
+    assert code == 2 and ("is a device" in err or "is a pipe" in err) and out == "", err
+
+
+def test_a_batch_line_that_never_ends_ends_the_batch(tmp_path, capsys):
+    from assistant.cli.common import MAX_SKIPPED_BYTES
+
+    batch = tmp_path / "endless.txt"
+    batch.write_bytes(b"go to the kitchen\n" + b"x" * (MAX_SKIPPED_BYTES + 2**20))
+    code, out, err = run(["parse", "--batch", str(batch), "--json"], capsys)
+    assert code == 2 and "without a line end" in err
+    assert json.loads(out.splitlines()[0])["text"] == "go to the kitchen"  # earlier lines were answered
