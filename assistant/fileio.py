@@ -238,3 +238,33 @@ def read_user_text(path: str | os.PathLike[str], max_bytes: int, what: str = "fi
         raise OSError(f"{path} is over {max_bytes // 1_000_000 or max_bytes} "
                       f"{'MB' if max_bytes >= 1_000_000 else 'bytes'}; is it really a {what}?")
     return data.decode(encoding)
+
+
+def check_writable_target(path: str | os.PathLike[str], what: str = "file") -> None:
+    """Refuse, before any work, a file to write whose folder cannot hold it: the nearest folder
+    that exists is tried with a temporary file (as :func:`atomic_write_bytes` will write; the
+    permission bits alone do not tell, e.g. in ``/proc`` or on a read-only disk). Raises
+    :class:`AssistantError`."""
+    folder = Path(path).absolute().parent
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent
+    if not folder.is_dir():
+        raise AssistantError(f"cannot write the {what} {path}: {folder} is a file, not a folder")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".write-check.", dir=folder)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as error:
+        raise AssistantError(f"cannot write the {what} {path}: {error.strerror or error} in {folder}; "
+                             "give a path in a folder you can write") from None
+
+
+def text_lines(stream):
+    """The lines of a text stream a person typed or piped, with bytes that are not UTF-8
+    replaced (``�``) instead of ending the stream with a ``UnicodeDecodeError``."""
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:
+        yield from stream
+        return
+    for raw in buffer:
+        yield raw.decode("utf-8", "replace")

@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from assistant.errors import AssistantError
-from assistant.fileio import check_readable_file
+from assistant.fileio import check_readable_file, check_writable_target
 
 
 def to_jsonable(value: Any) -> Any:
@@ -227,6 +227,10 @@ def out_file(suffix: str):
                                              f"{os.path.join(text.rstrip('/') or '.', 'out' + suffix)}")
         if not text.lower().endswith(suffix):
             raise argparse.ArgumentTypeError(f"{text!r}: give a file name ending in {suffix}")
+        try:
+            check_writable_target(text)
+        except AssistantError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
         return text
 
     return parse

@@ -156,10 +156,15 @@ class ChatSession:
         if self.read_line is not None:
             return self.read_line()
         if self.interactive:
-            return input(PROMPT)
+            try:
+                return input(PROMPT)
+            except UnicodeDecodeError:  # bytes that are not UTF-8 typed or pasted
+                self._print("(that line was not UTF-8 text; type it again)")
+                return ""
         self.out.write(PROMPT)
         self.out.flush()
-        line = self.stdin.readline()
+        buffer = getattr(self.stdin, "buffer", None)  # piped bytes that are not UTF-8 become �, not a crash
+        line = self.stdin.readline() if buffer is None else buffer.readline().decode("utf-8", "replace")
         if not line:
             raise EOFError
         return line.rstrip("\n")

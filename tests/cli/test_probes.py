@@ -134,3 +134,56 @@ def test_a_batch_line_that_never_ends_ends_the_batch(tmp_path, capsys):
     code, out, err = run(["parse", "--batch", str(batch), "--json"], capsys)
     assert code == 2 and "without a line end" in err
     assert json.loads(out.splitlines()[0])["text"] == "go to the kitchen"  # earlier lines were answered
+
+
+@pytest.mark.parametrize("argv", [
+    ["sim", "render", "apartment", "--pose", "5,0,3.14", "--out", "/proc/view.png"],
+    ["record", "--robot", "sim:apartment", "/proc/session.mcap"],
+    ["teach", "couch-front-table", "--world", "training-home", "--out", "/proc/demo.json"],
+])
+def test_a_file_that_cannot_be_written_is_refused_before_any_work(argv, capsys, monkeypatch):
+    """``teach --out /proc/x.json`` taught, then failed to save with a traceback."""
+    import io
+    import sys
+
+    monkeypatch.setattr(sys, "stdin", io.StringIO("w 2\nq\n"))
+    code, out, err = run(argv, capsys)
+    assert code == 2 and "cannot write" in err and "/proc" in err, err
+
+
+def test_keys_piped_to_teach_that_are_not_utf8_are_reported_not_fatal(tmp_path, capsys, monkeypatch):
+    import io
+    import sys
+
+    monkeypatch.setenv("ASSISTANT_DATA", str(tmp_path / "data"))
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(b"w 2\n\xff\xfe\nq\n"), encoding="utf-8"))
+    code, out, err = run(["teach", "couch-front-table", "--world", "training-home", "--accept-outlier"], capsys)
+    assert code == 0 and "is not a key" in out + err
+
+
+def test_a_chat_fed_bytes_that_are_not_utf8_goes_on(tmp_path, capsys, monkeypatch):
+    import io
+    import sys
+
+    monkeypatch.setenv("ASSISTANT_DATA", str(tmp_path / "data"))
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(b"\xff\xfe\nwhich home am I in?\n"), encoding="utf-8"))
+    code, out, err = run(["chat", "--world", "apartment", "--perception", "oracle"], capsys)
+    assert code == 0 and "You're in the apartment" in out, out
+
+
+def test_a_recording_of_loud_noise_is_heard_as_something_or_nothing(tmp_path, capsys):
+    import wave
+
+    noise = tmp_path / "noise.wav"
+    with wave.open(str(noise), "wb") as handle:
+        handle.setnchannels(1)
+        handle.setsampwidth(2)
+        handle.setframerate(16000)
+        handle.writeframes(np.random.default_rng(0).integers(-32768, 32767, 48000).astype("<i2").tobytes())
+    code, out, err = run(["listen", str(noise), "--json"], capsys)  # was pocketsphinx's IndexError
+    assert code in (0, 2)
+
+
+def test_looking_around_in_tiny_steps_is_refused(tmp_path, capsys):
+    code, out, err = run(["record", "--robot", "sim:apartment", "--step-deg", "0.0001", str(tmp_path / "r.mcap")], capsys)
+    assert code == 2 and "--step-deg must be from 1" in err
