@@ -4,6 +4,7 @@ behaviour — never a traceback, a hang or a silent wrong answer."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -187,3 +188,20 @@ def test_a_recording_of_loud_noise_is_heard_as_something_or_nothing(tmp_path, ca
 def test_looking_around_in_tiny_steps_is_refused(tmp_path, capsys):
     code, out, err = run(["record", "--robot", "sim:apartment", "--step-deg", "0.0001", str(tmp_path / "r.mcap")], capsys)
     assert code == 2 and "--step-deg must be from 1" in err
+
+
+def test_depth_inputs_beyond_reason_are_refused(tmp_path, capsys):
+    import os
+
+    fifo = tmp_path / "depth.png"
+    os.mkfifo(fifo)  # waited for ever
+    frame = tmp_path / "max.png"
+    Image.fromarray(np.full((48, 64), 65535, np.uint16)).save(frame)
+    sample = str(Path(__file__).resolve().parents[2] / "sample_scans" / "apartment_fetch.mcap")
+    for argv, words in (
+        (["perceive", "--depth", str(fifo), "--intrinsics", "525,525,32,24", "--depth-scale", "0.001"], "is a pipe"),
+        (["perceive", "--depth", str(frame), "--intrinsics", "525,525,32,24", "--depth-scale", "1e300"], "at most 1"),
+        (["perceive", "--replay", sample, "--at", "1e300", "--json"], "a recording is at most"),  # was OverflowError
+    ):
+        code, out, err = run(argv, capsys)
+        assert code == 2 and words in err, err
