@@ -138,7 +138,11 @@ def cache_dir() -> Path:
     root = os.environ.get("ASSISTANT_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assistant"
     )
-    return private_dir(root)
+    try:
+        return private_dir(root)
+    except OSError as error:  # a file of that name, a folder that cannot be made
+        raise AssistantError(f"the model cache {root} cannot be used ({error.strerror or error}); set "
+                             "$ASSISTANT_CACHE to a folder you can write") from None
 
 
 def insecure_cache_reason(path: str | os.PathLike[str]) -> str | None:

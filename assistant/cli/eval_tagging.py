@@ -33,6 +33,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from assistant.eval.tagging import consistency_reports, evaluate_tagging
 
+    if args.folds < 0 or args.folds == 1:
+        from assistant.errors import AssistantError
+
+        raise AssistantError(f"--folds {args.folds}: give 0 (no cross-validation) or 2 or more")
     progress = progress_for(args)
     if args.consistency:
         reports = consistency_reports(args.consistency, args.folds, progress)

@@ -205,3 +205,23 @@ def test_depth_inputs_beyond_reason_are_refused(tmp_path, capsys):
     ):
         code, out, err = run(argv, capsys)
         assert code == 2 and words in err, err
+
+
+def test_a_model_cache_that_cannot_be_a_folder_is_one_line(tmp_path, monkeypatch):
+    """``ASSISTANT_CACHE`` naming a file (or /proc/x) was a FileExistsError traceback at the
+    first model's cache; every cache user goes through ``cache_dir``."""
+    from assistant.errors import AssistantError
+    from assistant.fileio import cache_dir
+
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder")
+    for place in (blocker, "/proc/nope"):
+        monkeypatch.setenv("ASSISTANT_CACHE", str(place))
+        with pytest.raises(AssistantError, match="ASSISTANT_CACHE"):
+            cache_dir()
+
+
+@pytest.mark.parametrize("folds", ["-1", "1"])
+def test_tagging_folds_that_mean_nothing_are_refused(folds, capsys):
+    code, out, err = run(["eval", "tagging", "--folds", folds], capsys)
+    assert code == 2 and "give 0" in err
