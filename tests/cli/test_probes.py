@@ -225,3 +225,11 @@ def test_a_model_cache_that_cannot_be_a_folder_is_one_line(tmp_path, monkeypatch
 def test_tagging_folds_that_mean_nothing_are_refused(folds, capsys):
     code, out, err = run(["eval", "tagging", "--folds", folds], capsys)
     assert code == 2 and "give 0" in err
+
+
+def test_a_where_request_naming_a_list_is_refused_not_searched_for(tmp_path, capsys):
+    batch = tmp_path / "where.jsonl"
+    batch.write_text('{"object": ["mug"], "world": "apartment"}\n{"object": "mug", "world": ["apartment"]}\n')
+    code, out, err = run(["where", "--batch", str(batch), "--json"], capsys)
+    answers = [json.loads(line) for line in out.splitlines()]
+    assert code == 0 and len(answers) == 2 and all("are names, as text" in a["error"] for a in answers)
