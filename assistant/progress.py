@@ -131,6 +131,11 @@ def hook_for(json_output: bool = False, stream=None) -> Hook:
     return TerminalProgress(stream)
 
 
+def installed_hook() -> Hook | None:
+    """The hook :func:`set_hook` gave (the command line's, for the command running), or None."""
+    return _hook
+
+
 def current_hook() -> Hook:
     """The hook :func:`set_hook` gave, else the rule applied to stderr."""
     return _hook if _hook is not None else hook_for()

@@ -90,6 +90,8 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     finally:
         heartbeat.stop()
+        if hasattr(hook, "close"):
+            hook.close()  # the last progress line ends (and stops ticking)
         progress.set_hook(None)
 
 

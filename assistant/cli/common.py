@@ -291,10 +291,11 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
 def progress_for(args: argparse.Namespace):
     """The progress hook of one command (:class:`assistant.eval.progress.Progress`), by the one
     rule of :func:`assistant.progress.hook_for`: a tqdm bar per stage when stderr is a terminal;
-    quiet with ``--json`` or when stderr is not a terminal."""
-    from assistant.progress import hook_for
+    quiet with ``--json`` (an evaluation's included) or when stderr is not a terminal."""
+    from assistant.progress import hook_for, installed_hook
 
-    return hook_for(bool(getattr(args, "json", False)))
+    # the command line's own hook (it closes it when the command ends), else the rule applied here
+    return installed_hook() or hook_for(bool(getattr(args, "json", False)))
 
 
 def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:
