@@ -20,6 +20,13 @@ CPU time is the figure to trust on a shared machine.
     .venv/bin/python benchmarks/bench_trust.py first-reply [--repeats 5]
     .venv/bin/python benchmarks/bench_trust.py silence [--fresh-cache] -- assistant parse "go to the kitchen"
     .venv/bin/python benchmarks/bench_trust.py exit [--plain] [--repeats 3] -- assistant warm-up
+
+``chat-silence``: start ``assistant chat --world apartment`` in a pseudo-terminal, type one
+command (``--say``, default "where is my mug?") at the first prompt, and report the time to the
+first line on screen and the longest gap between lines until the chat has been quiet for
+``--settle`` seconds after its last words (then it is left with Ctrl-D).
+
+    .venv/bin/python benchmarks/bench_trust.py chat-silence [--say "where is my mug?"]
 """
 
 from __future__ import annotations
@@ -121,6 +128,36 @@ def exit_cost(command: list[str], plain: bool) -> tuple[float, float]:
     return usage.ru_utime + usage.ru_stime - at_last_handler, ended - last
 
 
+def chat_silence(say: str, settle_s: float, data_dir: str) -> tuple[float, float, str]:
+    """(seconds to the first output, longest gap after it, what ended that gap) of one chat."""
+    child = pexpect.spawn(sys.executable, ["-m", "assistant", "chat", "--world", "apartment"],
+                          env=_env({"ASSISTANT_DATA": data_dir}), encoding="utf-8", timeout=None,
+                          dimensions=(40, 200))
+    started = last = time.monotonic()
+    first, longest, after, typed = None, 0.0, "", False
+    try:
+        while time.monotonic() - last < settle_s:
+            try:
+                text = child.read_nonblocking(4096, timeout=0.05)
+            except pexpect.TIMEOUT:
+                continue
+            now = time.monotonic()
+            if first is None:
+                first = now - started
+            elif now - last > longest:
+                longest, after = now - last, text
+            last = now
+            if not typed and "you> " in text:
+                child.sendline(say)
+                typed = True
+    except pexpect.EOF:
+        pass
+    finally:
+        child.sendeof()
+        child.close(force=True)
+    return first or 0.0, longest, after
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="what", required=True)
@@ -129,11 +166,20 @@ def main() -> int:
     silence = sub.add_parser("silence")
     silence.add_argument("--fresh-cache", action="store_true")
     silence.add_argument("command", nargs=argparse.REMAINDER)
+    chat = sub.add_parser("chat-silence")
+    chat.add_argument("--say", default=FIRST_COMMAND)
+    chat.add_argument("--settle", type=float, default=45.0, help="seconds of quiet that end the run")
     ending = sub.add_parser("exit")
     ending.add_argument("--plain", action="store_true", help="main() alone: the interpreter's default finalization")
     ending.add_argument("--repeats", type=int, default=3)
     ending.add_argument("command", nargs=argparse.REMAINDER)
     args = parser.parse_args()
+    if args.what == "chat-silence":
+        with tempfile.TemporaryDirectory() as data:
+            first, longest, after = chat_silence(args.say, args.settle, data)
+        print(f"chat: first line after {first:.2f} s, then the longest gap {longest:.2f} s (target <= 3 s) "
+              f"around {args.say!r}\n  it ended with: {after.strip()[-120:]!r}")
+        return 0
     if args.what == "exit":
         command = [c for c in args.command if c != "--"]
         command = command[1:] if command and command[0] == "assistant" else command
