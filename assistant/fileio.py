@@ -138,7 +138,11 @@ def cache_dir() -> Path:
     root = os.environ.get("ASSISTANT_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assistant"
     )
-    return private_dir(root)
+    try:
+        return private_dir(root)
+    except OSError as error:  # a file of that name, a folder that cannot be made
+        raise AssistantError(f"the model cache {root} cannot be used ({error.strerror or error}); set "
+                             "$ASSISTANT_CACHE to a folder you can write") from None
 
 
 def insecure_cache_reason(path: str | os.PathLike[str]) -> str | None:
@@ -194,3 +198,77 @@ def write_cache(path: str | os.PathLike[str], obj) -> Path:
     private_dir(Path(path).parent)
     return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL),
                               mode=PRIVATE_FILE_MODE)
+
+
+def read_yaml(text: str):
+    """``yaml.safe_load(text)`` for a file a person gave: nesting too deep for the parser (it
+    recurses once per level and hit Python's limit with a traceback) is a ``yaml.YAMLError``
+    too, so a reader's one ``except yaml.YAMLError`` turns every kind of bad YAML into its
+    one-line message."""
+    import yaml
+
+    try:
+        return yaml.safe_load(text)
+    except RecursionError:
+        raise yaml.YAMLError("nested too deeply (hundreds of levels of [ or {)") from None
+
+
+def check_readable_file(path: str | os.PathLike[str], what: str = "file", pipes: bool = False) -> os.stat_result:
+    """The ``stat`` of ``path`` if it is a file to read; an ``OSError`` saying what it is
+    otherwise: a folder, a device such as ``/dev/zero`` (endless: reading a world file from it
+    filled 21 GB of memory), a named pipe unless ``pipes`` (opening one nobody writes to waits
+    for ever), or a missing file."""
+    import stat
+
+    info = os.stat(path)  # FileNotFoundError and the like say themselves
+    if stat.S_ISDIR(info.st_mode):
+        raise IsADirectoryError(f"{path} is a folder; give a {what}")
+    if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode):
+        raise OSError(f"{path} is a device, not a {what}")
+    if stat.S_ISFIFO(info.st_mode) and not pipes:
+        raise OSError(f"{path} is a pipe, not a {what}")
+    return info
+
+
+def read_user_text(path: str | os.PathLike[str], max_bytes: int, what: str = "file",
+                   encoding: str = "utf-8-sig") -> str:
+    """The text of a file a person named, read only if it is one (:func:`check_readable_file`)
+    and at most ``max_bytes`` long (checked while reading: a pipe has no size). Raises
+    ``OSError`` (what is wrong, in words) or ``UnicodeDecodeError``."""
+    check_readable_file(path, what)
+    with open(path, "rb") as handle:
+        data = handle.read(max_bytes + 1)
+    if len(data) > max_bytes:
+        raise OSError(f"{path} is over {max_bytes // 1_000_000 or max_bytes} "
+                      f"{'MB' if max_bytes >= 1_000_000 else 'bytes'}; is it really a {what}?")
+    return data.decode(encoding)
+
+
+def check_writable_target(path: str | os.PathLike[str], what: str = "file") -> None:
+    """Refuse, before any work, a file to write whose folder cannot hold it: the nearest folder
+    that exists is tried with a temporary file (as :func:`atomic_write_bytes` will write; the
+    permission bits alone do not tell, e.g. in ``/proc`` or on a read-only disk). Raises
+    :class:`AssistantError`."""
+    folder = Path(path).absolute().parent
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent
+    if not folder.is_dir():
+        raise AssistantError(f"cannot write the {what} {path}: {folder} is a file, not a folder")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".write-check.", dir=folder)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as error:
+        raise AssistantError(f"cannot write the {what} {path}: {error.strerror or error} in {folder}; "
+                             "give a path in a folder you can write") from None
+
+
+def text_lines(stream):
+    """The lines of a text stream a person typed or piped, with bytes that are not UTF-8
+    replaced (``�``) instead of ending the stream with a ``UnicodeDecodeError``."""
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:
+        yield from stream
+        return
+    for raw in buffer:
+        yield raw.decode("utf-8", "replace")

@@ -2,19 +2,23 @@
 
 Two kinds of waits: a counted stage ("fetch trials 12/128") and a step of unknown length
 ("training the language models on first use"). :class:`TerminalProgress` shows both with
-``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds ticking
-every half second so a long step never looks hung. :class:`LineProgress` writes one line per
-call (a log, a pipe); :func:`quiet` says nothing.
+``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds — redrawn
+every half second so a long step never looks hung; :func:`quiet` says nothing.
 
-Library code reports long steps through :func:`working` and :func:`counted`, which use the
-process's hook: by default a terminal display when stderr is a terminal and nothing otherwise;
-the command line sets it once (:func:`set_hook`): quiet with ``--json``. The hook has the
-signature of :class:`assistant.eval.progress.Progress`: ``hook(what, done=None, total=None)``.
+**The rule, kept here only** (:func:`hook_for`): progress is shown when stderr is a terminal,
+and is quiet with ``--json`` (its stdout is read by a program) or when stderr is not a terminal
+(a pipe, a log, a test: no bars or control characters in them). The command line applies it
+once per command (:func:`set_hook`); every evaluation's progress callback comes from it too
+(``assistant.cli.common.progress_for``). Library code reports long steps through
+:func:`working` and :func:`counted`, which use the process's hook (by default the rule applied to
+the process's stderr). A hook has the signature of :class:`assistant.eval.progress.Progress`:
+``hook(what, done=None, total=None)``.
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
 import sys
 import threading
 import time
@@ -32,24 +36,9 @@ def quiet(what: str, done: int | None = None, total: int | None = None) -> None:
     """A hook that says nothing."""
 
 
-class LineProgress:
-    """One line per call on ``stream`` (stderr): ``what``, then ``(done/total)`` if counted."""
-
-    def __init__(self, stream=None):
-        self.stream = stream
-
-    def __call__(self, what: str, done: int | None = None, total: int | None = None) -> None:
-        stream = self.stream or sys.stderr
-        count = "" if done is None else f" ({done}/{total})" if total is not None else f" ({done})"
-        stream.write(f"{what}{count}\n")
-        stream.flush()
-
-    def close(self) -> None:
-        pass
-
-
 class TerminalProgress:
-    """tqdm on a terminal: a bar per counted stage, a ticking clock for an uncounted step.
+    """tqdm on a terminal: a bar per counted stage, a clock for an uncounted step; both redrawn
+    every :data:`TICK_S` so their elapsed time ticks even while one step takes long.
 
     A call with a new ``what`` ends the previous stage (its bar stays on screen, finished); a
     call with the same ``what`` moves its bar. :meth:`close` ends the last one.
@@ -75,8 +64,7 @@ class TerminalProgress:
                                  dynamic_ncols=True, mininterval=0.2,
                                  bar_format=None if counted else "{desc} … {elapsed}")
                 _count_bar(+1)
-                if not counted:
-                    self._start_ticker()
+                self._start_ticker()  # a counted stage's clock ticks too: one step may take long
             if done is not None:
                 self._bar.n = done
                 self._bar.refresh()
@@ -126,26 +114,31 @@ def set_hook(hook: Hook | None) -> None:
     _hook = hook
 
 
-def current_hook() -> Hook:
-    if _hook is not None:
-        return _hook
+def is_terminal(stream) -> bool:
+    """Whether ``stream`` is a terminal a person watches (False for a closed or replaced one)."""
     try:
-        terminal = sys.stderr.isatty()
-    except (AttributeError, ValueError):  # a closed or replaced stderr
-        terminal = False
-    return TerminalProgress() if terminal else quiet
-
-
-def for_terminal(json_output: bool, stream=None) -> Hook:
-    """The hook a command uses: quiet with ``--json``; tqdm on a terminal; lines otherwise."""
-    if json_output:
-        return quiet
-    stream = stream or sys.stderr
-    try:
-        terminal = stream.isatty()
+        return bool(stream.isatty())
     except (AttributeError, ValueError):
-        terminal = False
-    return TerminalProgress(stream) if terminal else LineProgress(stream)
+        return False
+
+
+def hook_for(json_output: bool = False, stream=None) -> Hook:
+    """The one rule for where progress goes (see the module): a :class:`TerminalProgress` on
+    ``stream`` (stderr) when it is a terminal; :func:`quiet` with ``json_output`` or when it is not."""
+    stream = stream or sys.stderr
+    if json_output or not is_terminal(stream):
+        return quiet
+    return TerminalProgress(stream)
+
+
+def installed_hook() -> Hook | None:
+    """The hook :func:`set_hook` gave (the command line's, for the command running), or None."""
+    return _hook
+
+
+def current_hook() -> Hook:
+    """The hook :func:`set_hook` gave, else the rule applied to stderr."""
+    return _hook if _hook is not None else hook_for()
 
 
 @contextlib.contextmanager
@@ -153,13 +146,10 @@ def working(what: str) -> Iterator[None]:
     """Report a step of unknown length (``with working("training the tagger"): …``); on a
     terminal its elapsed time ticks until it ends."""
     hook = current_hook()
-    started = time.monotonic()
     hook(what)
     try:
         yield
     finally:
-        if isinstance(hook, LineProgress):
-            hook(f"{what}: done in {time.monotonic() - started:.1f} s")
         if hasattr(hook, "close"):
             hook.close()  # a terminal's bar stays, showing the time it took
 
@@ -182,33 +172,45 @@ def counted(items: Iterable[T], what: str, total: int | None = None) -> Iterator
             hook.close()
 
 
-class Heartbeat:
-    """For a command that may work a while before it prints: after ``delay_s`` without an end,
-    a terminal line ``what … 00:05`` ticks until :meth:`stop` (then it is erased), so no wait
-    is silent. Does nothing when ``stream`` is not a terminal."""
+def process_age() -> float:
+    """Seconds since this process started (Linux: from /proc; elsewhere 0.0)."""
+    try:
+        with open("/proc/self/stat", encoding="ascii") as stat, open("/proc/uptime", encoding="ascii") as uptime:
+            started_ticks = int(stat.read().rpartition(")")[2].split()[19])  # field 22, after the name
+            now = float(uptime.read().split()[0])
+        return max(0.0, now - started_ticks / os.sysconf("SC_CLK_TCK"))
+    except (OSError, ValueError, IndexError):
+        return 0.0
 
-    def __init__(self, what: str, delay_s: float = 2.0, stream=None):
+
+class Heartbeat:
+    """For a command that may work a while before it prints: once ``delay_s`` have passed since
+    ``since`` (a :func:`time.monotonic` time; default when :meth:`start` is called) without an
+    end, a terminal line ``what … 00:05`` ticks until :meth:`stop` (then it is erased), so no
+    wait is silent. The command line counts from the process's start (:func:`process_age`):
+    Python's start-up and imports take a second or more on a loaded machine. Does nothing when
+    ``stream`` is not a terminal."""
+
+    def __init__(self, what: str, delay_s: float = 2.0, stream=None, since: float | None = None):
         self.what = what
         self.delay_s = delay_s
         self.stream = stream or sys.stderr
+        self.since = since
         self._done = threading.Event()
         self._thread: threading.Thread | None = None
 
     def start(self) -> "Heartbeat":
-        try:
-            terminal = self.stream.isatty()
-        except (AttributeError, ValueError):
-            terminal = False
-        if terminal:
-            self._thread = threading.Thread(target=self._run, name="progress-heartbeat", daemon=True)
+        if is_terminal(self.stream):
+            started = time.monotonic() if self.since is None else self.since
+            self._thread = threading.Thread(target=self._run, args=(started,), name="progress-heartbeat",
+                                            daemon=True)
             self._thread.start()
         return self
 
-    def _run(self) -> None:
+    def _run(self, started: float) -> None:
         from tqdm import tqdm
 
-        started = time.monotonic()
-        if self._done.wait(self.delay_s):
+        if self._done.wait(max(0.0, started + self.delay_s - time.monotonic())):
             return
         bar = None
         while True:
@@ -217,10 +219,10 @@ class Heartbeat:
                     bar.close()
                     bar = None
             else:
-                if bar is None:
+                if bar is None:  # (delay: not drawn before its clock is set to the process's start)
                     bar = tqdm(total=None, desc=self.what, file=self.stream, leave=False, dynamic_ncols=True,
-                               bar_format="{desc} … {elapsed}")
-                    bar.start_t -= time.monotonic() - started  # count from the command's start
+                               bar_format="{desc} … {elapsed}", delay=1e-6)
+                    bar.start_t -= time.monotonic() - started
                 with contextlib.suppress(Exception):
                     bar.refresh()
             if self._done.wait(TICK_S):

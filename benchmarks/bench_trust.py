@@ -10,8 +10,23 @@ times; the median and the worst are printed.
 and report the longest time with no new output while it runs. Target ≤ 3 s. ``--fresh-cache``
 runs it on an empty model cache (first use: every model trains).
 
+``exit``: how long a command takes to end after its work is done — the CPU time of the
+interpreter's finalization (the process's CPU time from the kernel minus its CPU time when its
+last atexit handler ran) and the wall time from the command's last output to its end — run as
+the ``assistant`` program (``program()``, which prepares a quick exit) and, with ``--plain``,
+as ``main()`` alone (the interpreter's default finalization, as before issue 21's fix).
+CPU time is the figure to trust on a shared machine.
+
     .venv/bin/python benchmarks/bench_trust.py first-reply [--repeats 5]
     .venv/bin/python benchmarks/bench_trust.py silence [--fresh-cache] -- assistant parse "go to the kitchen"
+    .venv/bin/python benchmarks/bench_trust.py exit [--plain] [--repeats 3] -- assistant warm-up
+
+``chat-silence``: start ``assistant chat --world apartment`` in a pseudo-terminal, type one
+command (``--say``, default "where is my mug?") at the first prompt, and report the time to the
+first line on screen and the longest gap between lines until the chat has been quiet for
+``--settle`` seconds after its last words (then it is left with Ctrl-D).
+
+    .venv/bin/python benchmarks/bench_trust.py chat-silence [--say "where is my mug?"]
 """
 
 from __future__ import annotations
@@ -20,6 +35,7 @@ import argparse
 import os
 import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -81,6 +97,67 @@ def longest_silence(command: list[str], env: dict) -> tuple[float, float, int, s
     return longest, end - start, child.exitstatus if child.exitstatus is not None else -1, after
 
 
+#: run inside the measured process: the command as the program runs it (or main() alone with
+#: "plain"), and the process's CPU time written when its last atexit handler runs
+EXIT_PROBE = """
+import atexit, sys, time
+out = open(sys.argv[1], "w")
+atexit.register(lambda: (out.write(repr(time.process_time())), out.close()))  # registered first: runs last
+import assistant.cli as cli
+plain = sys.argv[2] == "plain"
+sys.argv = ["assistant", *sys.argv[3:]]
+raise SystemExit(cli.main() if plain else cli.program())
+"""
+
+
+def exit_cost(command: list[str], plain: bool) -> tuple[float, float]:
+    """(CPU seconds of finalization, wall seconds from the last output to the end) of one run of
+    ``assistant`` ``command``."""
+    with tempfile.NamedTemporaryFile("r", suffix=".cpu") as mark:
+        started = time.monotonic()
+        child = subprocess.Popen([sys.executable, "-c", EXIT_PROBE, mark.name, "plain" if plain else "program",
+                                  *command], env=_env(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        last = started
+        while child.stdout.read1(4096):
+            last = time.monotonic()
+        _, status, usage = os.wait4(child.pid, 0)
+        ended = time.monotonic()
+        if status != 0:
+            raise SystemExit(f"assistant {' '.join(command)} failed (wait status {status})")
+        at_last_handler = float(mark.read())
+    return usage.ru_utime + usage.ru_stime - at_last_handler, ended - last
+
+
+def chat_silence(say: str, settle_s: float, data_dir: str) -> tuple[float, float, str]:
+    """(seconds to the first output, longest gap after it, what ended that gap) of one chat."""
+    child = pexpect.spawn(sys.executable, ["-m", "assistant", "chat", "--world", "apartment"],
+                          env=_env({"ASSISTANT_DATA": data_dir}), encoding="utf-8", timeout=None,
+                          dimensions=(40, 200))
+    started = last = time.monotonic()
+    first, longest, after, typed = None, 0.0, "", False
+    try:
+        while time.monotonic() - last < settle_s:
+            try:
+                text = child.read_nonblocking(4096, timeout=0.05)
+            except pexpect.TIMEOUT:
+                continue
+            now = time.monotonic()
+            if first is None:
+                first = now - started
+            elif now - last > longest:
+                longest, after = now - last, text
+            last = now
+            if not typed and "you> " in text:
+                child.sendline(say)
+                typed = True
+    except pexpect.EOF:
+        pass
+    finally:
+        child.sendeof()
+        child.close(force=True)
+    return first or 0.0, longest, after
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="what", required=True)
@@ -89,7 +166,29 @@ def main() -> int:
     silence = sub.add_parser("silence")
     silence.add_argument("--fresh-cache", action="store_true")
     silence.add_argument("command", nargs=argparse.REMAINDER)
+    chat = sub.add_parser("chat-silence")
+    chat.add_argument("--say", default=FIRST_COMMAND)
+    chat.add_argument("--settle", type=float, default=45.0, help="seconds of quiet that end the run")
+    ending = sub.add_parser("exit")
+    ending.add_argument("--plain", action="store_true", help="main() alone: the interpreter's default finalization")
+    ending.add_argument("--repeats", type=int, default=3)
+    ending.add_argument("command", nargs=argparse.REMAINDER)
     args = parser.parse_args()
+    if args.what == "chat-silence":
+        with tempfile.TemporaryDirectory() as data:
+            first, longest, after = chat_silence(args.say, args.settle, data)
+        print(f"chat: first line after {first:.2f} s, then the longest gap {longest:.2f} s (target <= 3 s) "
+              f"around {args.say!r}\n  it ended with: {after.strip()[-120:]!r}")
+        return 0
+    if args.what == "exit":
+        command = [c for c in args.command if c != "--"]
+        command = command[1:] if command and command[0] == "assistant" else command
+        runs = [exit_cost(command, args.plain) for _ in range(args.repeats)]
+        cpu, wall = (statistics.median(r[i] for r in runs) for i in (0, 1))
+        print(f"after its work, {'main() alone' if args.plain else 'the assistant program'} took median "
+              f"{cpu:.2f} s of CPU to end ({wall:.2f} s wall from its last output) over {len(runs)} runs: "
+              f"assistant {' '.join(command)}")
+        return 0
     if args.what == "first-reply":
         with tempfile.TemporaryDirectory() as data:
             times = [first_reply(data) for _ in range(args.repeats)]

@@ -1,5 +1,5 @@
-"""Progress of long work: tqdm on a terminal (a ticking clock for steps without a count), lines
-in a log, nothing with --json."""
+"""Progress of long work: tqdm on a terminal (a ticking clock for steps without a count); nothing
+with --json or when stderr is not a terminal."""
 
 from __future__ import annotations
 
@@ -29,6 +29,20 @@ def test_an_uncounted_step_keeps_ticking_on_a_terminal():
     assert "00:01" in later
 
 
+def test_a_counted_stage_keeps_ticking_while_one_step_takes_long():
+    screen = FakeTerminal()
+    hook = progress.TerminalProgress(screen)
+    try:
+        hook("fetch trials", 3, 128)
+        time.sleep(0.3)
+        first = screen.getvalue()
+        time.sleep(1.3)  # one trial takes long: no call in between
+        later = screen.getvalue()
+    finally:
+        hook.close()
+    assert "3/128" in first and len(later) > len(first) and "00:01" in later
+
+
 def test_a_counted_stage_shows_how_far():
     screen = FakeTerminal()
     progress.set_hook(progress.TerminalProgress(screen))
@@ -39,13 +53,13 @@ def test_a_counted_stage_shows_how_far():
     assert "policy models" in screen.getvalue() and "4/4" in screen.getvalue()
 
 
-def test_json_is_quiet_and_a_log_gets_lines():
-    assert progress.for_terminal(json_output=True, stream=FakeTerminal()) is progress.quiet
-    log = io.StringIO()
-    hook = progress.for_terminal(json_output=False, stream=log)
-    hook("fetch trials", 2, 8)
-    assert log.getvalue() == "fetch trials (2/8)\n"
-    assert isinstance(progress.for_terminal(False, FakeTerminal()), progress.TerminalProgress)
+def test_the_rule_shows_progress_on_a_terminal_only_and_never_with_json():
+    assert isinstance(progress.hook_for(False, FakeTerminal()), progress.TerminalProgress)
+    assert progress.hook_for(True, FakeTerminal()) is progress.quiet  # --json
+    assert progress.hook_for(False, io.StringIO()) is progress.quiet  # a pipe or a log
+    closed = io.StringIO()
+    closed.close()  # isatty() raises on a closed stream
+    assert progress.hook_for(False, closed) is progress.quiet
 
 
 def test_the_default_outside_a_terminal_says_nothing(capsys):
@@ -70,3 +84,12 @@ def test_a_heartbeat_speaks_after_its_delay_and_stands_aside_for_a_progress_line
     assert len(screen.getvalue()) == size  # silent while the other line ticks
     other.close()
     beat.stop()
+
+
+def test_a_heartbeat_can_count_from_an_earlier_start_such_as_the_process_s():
+    screen = FakeTerminal()
+    beat = progress.Heartbeat("assistant parse", delay_s=2.0, stream=screen, since=time.monotonic() - 1.9).start()
+    time.sleep(0.6)
+    beat.stop()
+    assert "assistant parse" in screen.getvalue() and "00:02" in screen.getvalue()  # the clock counts from then
+    assert 0.0 < progress.process_age() < 24 * 3600

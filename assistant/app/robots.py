@@ -27,20 +27,17 @@ def spec_world(spec: str) -> str | None:
 
 
 def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = True, start=None):
-    """A new, unconnected robot for ``spec`` (use it in a ``with`` block). For the simulator:
-    ``world`` (a :class:`~assistant.world.World`) in ``scene``, from its start pose (or
-    ``start``), with odometry noise when ``noise`` (the localizer corrects it). A robot object
-    (not a spec: a replay made by the caller) is returned as it is."""
+    """A new, unconnected robot for ``spec`` (use it in a ``with`` block), given the use case's
+    home options (:data:`~assistant.robot.factory.HOME_OPTIONS`; each adapter takes those it
+    needs): ``world`` (a :class:`~assistant.world.World`) in ``scene``, starting at ``start``
+    (default: the world's start pose), with odometry noise when ``noise`` (the localizer
+    corrects it) and ``seed``. A robot object (not a spec: a replay made by the caller) is
+    returned as it is."""
     if not isinstance(spec, str):
         return spec
     parsed = parse_robot_spec(spec)
-    if parsed.scheme == "p3dx":  # a real base starts its odometry where the home's plan says it stands
-        return make_robot(parsed, start=start or world.start)
-    if parsed.scheme != "sim":
-        return make_robot(parsed)
     named = spec_world(str(parsed))
     if named is not None and named != world.name:
         raise AssistantError(f"the robot {parsed} is in the {named} home but the task is in the {world.name}; "
                              f"give --world {named} or --robot sim")
-    scene_named = parsed.argument.partition(":")[2]
-    return make_robot("sim", world=world, scene=scene_named or scene, start=start, seed=seed, noise=noise)
+    return make_robot(parsed, world=world, scene=scene, start=start, seed=seed, noise=noise)

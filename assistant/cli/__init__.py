@@ -11,9 +11,10 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import time
 
 from assistant.errors import AssistantError
-from assistant.runtime import limit_openmp_threads
+from assistant.runtime import limit_openmp_threads, prepare_to_exit
 
 #: Command modules under ``assistant.cli``, in the order ``--help`` lists them.
 COMMAND_MODULES = (
@@ -56,6 +57,11 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def json_output(args: argparse.Namespace) -> bool:
+    """Whether the command prints JSON: its ``--json``, or an evaluation's (``eval NAME … --json``)."""
+    return bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
+
+
 def main(argv: list[str] | None = None) -> int:
     limit_openmp_threads()
     from assistant.cli.common import join_negative_values
@@ -65,12 +71,12 @@ def main(argv: list[str] | None = None) -> int:
     import assistant.progress as progress
 
     # training on first use shows its progress on a terminal; quiet with --json or in a pipe
-    json_output = bool(getattr(args, "json", False)) or "--json" in (getattr(args, "options", None) or [])
-    terminal = not json_output and sys.stderr.isatty()
-    progress.set_hook(progress.TerminalProgress() if terminal else progress.quiet)
+    hook = progress.hook_for(json_output(args))
+    progress.set_hook(hook)
     # a command that works a while before it prints says so (not the interactive ones)
-    heartbeat = progress.Heartbeat(f"assistant {args.command}")
-    if terminal and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
+    heartbeat = progress.Heartbeat(f"assistant {args.command}",
+                                   since=time.monotonic() - progress.process_age())  # start-up counts
+    if hook is not progress.quiet and args.command not in INTERACTIVE_COMMANDS and not getattr(args, "view", False):
         heartbeat.start()
     try:
         return int(args.handler(args) or 0)
@@ -84,4 +90,16 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     finally:
         heartbeat.stop()
+        if hasattr(hook, "close"):
+            hook.close()  # the last progress line ends (and stops ticking)
         progress.set_hook(None)
+
+
+def program() -> int:
+    """The ``assistant`` program (the console script and ``python -m assistant``): :func:`main`
+    on the process's arguments, then :func:`~assistant.runtime.prepare_to_exit`, so the process
+    ends at once after its last line instead of spending a second or more freeing its models."""
+    try:
+        return main()
+    finally:
+        prepare_to_exit()

@@ -62,19 +62,27 @@ def add_speech_arguments(parser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from assistant.app import spec_world
-    from assistant.dialogue.repl import ChatSession
+    from assistant.progress import working
 
-    args.world = args.world or spec_world(args.robot) or "apartment"
     if args.audio_in or args.say_to:
         args.speech = True
     if args.asr_model and args.asr != "vosk":
         from assistant.errors import AssistantError
 
         raise AssistantError("--asr-model is the folder of a vosk model: add --asr vosk")
+    # the product's code, the home, the memory and the language models load before the greeting:
+    # a ticking line on a terminal meanwhile (12–16 s on a loaded machine: the chat's silent start)
+    with working("getting ready to talk: the home, the memory and the language models"):
+        from assistant.app import spec_world
+
+        args.world = args.world or spec_world(args.robot) or "apartment"
+        if not args.speech:
+            from assistant.dialogue.repl import ChatSession
+
+            session = ChatSession(args)
+            session.prepare()
     if args.speech:
         from assistant.dialogue.speech.session import run as run_speech
 
         return run_speech(args)
-
-    return ChatSession(args).loop()
+    return session.loop()

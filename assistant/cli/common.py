@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from assistant.errors import AssistantError
+from assistant.fileio import check_readable_file, check_writable_target
 
 
 def to_jsonable(value: Any) -> Any:
@@ -48,6 +49,8 @@ def show_report(args, report, print_report) -> int:
 
 #: longest batch line read, in bytes; a longer line is answered with an error and skipped
 MAX_LINE_BYTES = 64 * 1024
+#: how much of one over-long line is skipped before the batch ends (``/dev/zero`` never ends one)
+MAX_SKIPPED_BYTES = 16 * 2**20
 
 
 def _finite_float(text: str) -> float:
@@ -107,8 +110,13 @@ def _batch_lines(handle):
             return
         number += 1
         if len(raw) > MAX_LINE_BYTES and not raw.endswith(b"\n"):
+            skipped = len(raw)
             while raw and not raw.endswith(b"\n"):  # skip the rest of the long line
+                if skipped > MAX_SKIPPED_BYTES:  # no line end in sight: not a file of requests
+                    raise AssistantError(f"line {number} goes on for over {MAX_SKIPPED_BYTES // 2**20} MiB "
+                                         "without a line end; give a text file with one request per line")
                 raw = handle.readline(MAX_LINE_BYTES)
+                skipped += len(raw)
             yield number, None, f"longer than {MAX_LINE_BYTES} bytes; give one request per line"
             continue
         if number == 1 and raw.startswith(b"\xef\xbb\xbf"):
@@ -133,11 +141,11 @@ def run_batch(
     Blank lines are skipped.
     """
     try:
+        if path != "-":
+            check_readable_file(path, "file with one request per line", pipes=True)  # <(command) is fine
         handle_file = sys.stdin.buffer if path == "-" else open(path, "rb")
     except OSError as error:
-        raise AssistantError(f"cannot read batch file {path}: {error.strerror}") from error
-    if path != "-" and os.path.isdir(path):
-        raise AssistantError(f"batch file {path} is a folder; give a file with one request per line")
+        raise AssistantError(f"cannot read batch file {path}: {error.strerror or error}") from error
     with handle_file:
         for number, line, problem in _batch_lines(handle_file):
             if problem is None:
@@ -219,6 +227,10 @@ def out_file(suffix: str):
                                              f"{os.path.join(text.rstrip('/') or '.', 'out' + suffix)}")
         if not text.lower().endswith(suffix):
             raise argparse.ArgumentTypeError(f"{text!r}: give a file name ending in {suffix}")
+        try:
+            check_writable_target(text)
+        except AssistantError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
         return text
 
     return parse
@@ -277,12 +289,13 @@ def add_json_flag(parser: argparse.ArgumentParser) -> None:
 
 
 def progress_for(args: argparse.Namespace):
-    """The progress hook of one command (:class:`assistant.eval.progress.Progress`): quiet with
-    ``--json`` (its stdout is read by programs and its stderr often shown beside it); a tqdm bar
-    per stage on a terminal; one line per step on stderr otherwise (a log)."""
-    from assistant.progress import for_terminal
+    """The progress hook of one command (:class:`assistant.eval.progress.Progress`), by the one
+    rule of :func:`assistant.progress.hook_for`: a tqdm bar per stage when stderr is a terminal;
+    quiet with ``--json`` (an evaluation's included) or when stderr is not a terminal."""
+    from assistant.progress import hook_for, installed_hook
 
-    return for_terminal(bool(getattr(args, "json", False)))
+    # the command line's own hook (it closes it when the command ends), else the rule applied here
+    return installed_hook() or hook_for(bool(getattr(args, "json", False)))
 
 
 def percent(value: float | None, digits: int = 1, sign: str = "%") -> str:

@@ -6,6 +6,9 @@ import argparse
 
 from assistant.cli.common import finite_float, print_table, progress_for, show_report
 
+#: what ``--quick`` stands for (see assistant.cli.eval): the conversations named nonsense-…
+QUICK = ("--only", "nonsense")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from assistant.generation.types import SEARCH_MODES

@@ -9,6 +9,9 @@ from assistant.cli.common import print_table, progress_for, show_report
 from assistant.errors import AssistantError
 from assistant.eval.fetch import DEFAULT_DEV_SET, OUTCOMES, REQUIRED
 
+#: what ``--quick`` stands for (see assistant.cli.eval): the first two commands, oracle perception
+QUICK = ("--limit", "2", "--perception", "oracle")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--perception", choices=("sensed", "oracle", "both"), default="both",

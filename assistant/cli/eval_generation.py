@@ -7,6 +7,9 @@ import argparse
 from assistant.cli.common import emit_json, miss_probability, print_table, progress_for
 from assistant.eval.generation import DISSERTATION_TRUE, STUDY_WORLDS
 
+#: what ``--quick`` stands for (see assistant.cli.eval): the apartment's objects from the world file, no listener
+QUICK = ("--worlds", "apartment", "--search", "oracle", "--no-listener")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from assistant.generation.types import SEARCH_MODES

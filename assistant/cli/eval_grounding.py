@@ -7,6 +7,9 @@ import argparse
 from assistant.cli.common import percent, print_table, progress_for, show_report
 from assistant.eval.grounding import DISSERTATION, FIELD_ROWS, GROUNDER_NAMES
 
+#: what ``--quick`` stands for (see assistant.cli.eval): one bootstrap round of the scored grounder
+QUICK = ("--rounds", "1", "--grounder", "scored", "--no-plans")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--corpus", metavar="PATH", action="append",

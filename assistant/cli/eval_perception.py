@@ -7,6 +7,9 @@ import argparse
 from assistant.cli.common import finite_float, print_table, progress_for, show_report
 from assistant.eval.perception import CATEGORY_ORDER, DEFAULT_CLASSIFIERS
 
+#: what ``--quick`` stands for (see assistant.cli.eval): the GSVM on the held-out views only
+QUICK = ("--skip", "orientation,scenes,real", "--classifiers", "gsvm")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--realdata", metavar="PATH",

@@ -6,6 +6,9 @@ import argparse
 
 from assistant.cli.common import print_table, progress_for, show_report
 
+#: what ``--quick`` stands for (see assistant.cli.eval): one RDT, one layout, one start pose
+QUICK = ("--rdt", "couch-front-table", "--layout", "apartment", "--trials", "1")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--demonstrations", metavar="DIR",

@@ -6,13 +6,16 @@ import argparse
 
 from assistant.cli.common import emit_json, percent, print_table, progress_for
 
+#: what ``--quick`` stands for (see assistant.cli.eval): one clean sentence of each kind
+QUICK = ("--per-kind", "1", "--clean-only")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--asr", choices=("pocketsphinx", "vosk"), default="pocketsphinx",
                         help="recogniser to measure (default pocketsphinx)")
     parser.add_argument("--asr-model", metavar="DIR", help="the vosk model folder (with --asr vosk)")
-    parser.add_argument("--quick", action="store_true",
-                        help="4 sentences of each kind (36 utterances with the noise levels): a smoke test")
+    parser.add_argument("--per-kind", type=int, metavar="N",
+                        help="only the first N sentences of each kind (4: 36 utterances with the noise levels)")
     parser.add_argument("--all-voices", action="store_true",
                         help="every sentence in every voice and rate (8x longer); default: in rotation")
     parser.add_argument("--kind", action="append", choices=("command", "where", "chat"),
@@ -37,7 +40,7 @@ def run(args: argparse.Namespace) -> int:
     if args.merge:
         report = _merged(args.merge)
     else:
-        report = evaluate_speech(args.asr, args.asr_model, quick=args.quick, all_voices=args.all_voices,
+        report = evaluate_speech(args.asr, args.asr_model, per_kind=args.per_kind, all_voices=args.all_voices,
                                  kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
                                  open_fallback=not args.no_open, shard=_shard(args.shard),
                                  progress=progress_for(args))

@@ -7,6 +7,9 @@ from pathlib import Path
 
 from assistant.cli.common import emit_json, percent, print_table, progress_for, show_report
 
+#: what ``--quick`` stands for (see assistant.cli.eval): two-fold cross-validation on our corpus, no real test files
+QUICK = ("--folds", "2", "--no-test")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--corpus", action="append", metavar="PATH",
@@ -30,6 +33,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from assistant.eval.tagging import consistency_reports, evaluate_tagging
 
+    if args.folds < 0 or args.folds == 1:
+        from assistant.errors import AssistantError
+
+        raise AssistantError(f"--folds {args.folds}: give 0 (no cross-validation) or 2 or more")
     progress = progress_for(args)
     if args.consistency:
         reports = consistency_reports(args.consistency, args.folds, progress)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 
 from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, check_command_text, emit_json, request_int,
-                                  require_text_or_batch, run_batch, seed_int)
+                                  out_file, require_text_or_batch, run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
 SCENES = ("original", "modified")
@@ -33,7 +33,7 @@ def register(subparsers) -> None:
     add_robot_option(parser, help_="sim (default; sim:WORLD[:SCENE] names the home) or replay:FILE.mcap — a "
                                    "recorded session (assistant record): its home is the recording's unless "
                                    "--world says otherwise")
-    parser.add_argument("--record", metavar="OUT.mcap",
+    parser.add_argument("--record", metavar="OUT.mcap", type=out_file(".mcap"),
                         help="record the run (depth, odometry, commands, the command's words) as MCAP; "
                              "replay it with --robot replay:OUT.mcap")
     parser.add_argument("--object", metavar="NAME", help="the object to check for at the end "

@@ -22,6 +22,10 @@ def _numbers(count: int, what: str):
     return parse
 
 
+#: largest --at (seconds): a week of recording
+MAX_AT_S = 7 * 24 * 3600.0
+
+
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "perceive", help="detect furniture in a depth frame (simulated view or a depth PNG)",
@@ -95,6 +99,8 @@ def _run_replay(detector, args) -> int:
         raise AssistantError("choose the frame with --frame N or --at SECONDS, not both")
     if (args.frame is not None and args.frame < 0) or (args.at is not None and args.at < 0):
         raise AssistantError("--frame and --at count from the start of the recording: use 0 or more")
+    if args.at is not None and args.at > MAX_AT_S:  # (1e300 s overflowed the nanosecond clock)
+        raise AssistantError(f"--at {args.at:g}: a recording is at most {MAX_AT_S:g} s long; give seconds from its start")
     rows = []
     with ReplayRobot(args.replay, on_end="hold") as robot:
         start_s = robot.time_s

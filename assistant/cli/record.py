@@ -10,7 +10,11 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, finite_float
+from assistant.cli.common import add_json_flag, emit_json, finite_float, out_file
+
+
+#: smallest --step-deg: 360 frames in one turn (0.0001° asked for 3.6 million and never ended)
+MIN_STEP_DEG = 1.0
 
 
 def register(subparsers) -> None:
@@ -20,7 +24,7 @@ def register(subparsers) -> None:
                     "millimetres), camera info, odometry, velocity commands and the dialogue — as "
                     "ROS 2 messages in an MCAP file, written as it happens (a cut file replays up to "
                     "the cut). Replay it with --robot replay:OUT.mcap.")
-    parser.add_argument("out", metavar="OUT.mcap", help="the recording to write")
+    parser.add_argument("out", metavar="OUT.mcap", type=out_file(".mcap"), help="the recording to write")
     parser.add_argument("--robot", required=True, metavar="SPEC",
                         help="sim:WORLD[:SCENE], p3dx:PORT, or replay:PATH (to re-record a recording)")
     parser.add_argument("--fetch", metavar="TEXT", help="carry out this fetch command while recording")
@@ -44,16 +48,16 @@ def run(args: argparse.Namespace) -> int:
     from assistant.robot import make_robot, parse_robot_spec
     from assistant.robot.recording import RecordingRobot, recording_summary
 
-    if not (args.step_deg > 0 and args.turn_rate > 0):
-        raise AssistantError("--step-deg and --turn-rate must be positive")
+    if not (MIN_STEP_DEG <= args.step_deg <= 360 and args.turn_rate > 0):
+        raise AssistantError(f"--step-deg must be from {MIN_STEP_DEG:g} to 360 degrees (a frame every step of "
+                             "one turn) and --turn-rate positive")
     spec = parse_robot_spec(args.robot)
     world = args.world or (spec.argument.partition(":")[0] if spec.scheme == "sim" else None) or None
     scene = (spec.argument.partition(":")[2] if spec.scheme == "sim" else "") or args.scene
     if args.fetch and not world:
         raise AssistantError("say which home the fetch is in: --world NAME")
-    options = {"world": world or "apartment", "scene": scene, "seed": args.seed} if spec.scheme == "sim" else {}
-    if spec.scheme == "sim" and args.fetch:
-        options["noise"] = True  # as the fetch command drives the simulator
+    # the home options (each robot takes those it needs); noisy odometry as the fetch command drives
+    options = {"world": world, "scene": scene, "seed": args.seed, "noise": bool(args.fetch)}
     metadata = {"spec": str(spec), "world": world or "", "scene": scene if world else "",
                 "task": f"fetch: {args.fetch}" if args.fetch else f"look around, a frame every {args.step_deg:g}°"}
     if args.fetch:

@@ -65,7 +65,9 @@ def run(args: argparse.Namespace) -> int:
                miss_rate=0.0, seed=0, robot="sim"):
         if not name or not world:
             raise AssistantError("a request needs 'object' and 'world'")
-        return finder.where_is(str(name), world, scene, robot=robot, search=search, listener=listener,
+        if not isinstance(name, str) or not isinstance(world, str):  # ["mug"] was searched for as "['mug']"
+            raise AssistantError("'object' and 'world' are names, as text (\"mug\", \"apartment\")")
+        return finder.where_is(name, world, scene, robot=robot, search=search, listener=listener,
                                style=style, question=question, miss_rate=miss_rate, seed=seed).description
 
     if args.batch:

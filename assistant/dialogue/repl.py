@@ -28,6 +28,7 @@ class ChatSession:
 
         self.stdin = stdin or sys.stdin
         self.out = stdout or sys.stdout
+        self._prepared = False
         data = default_data_dir()
         self.world = load_world(args.world)
         self.scene = self.world.scene(args.scene).name
@@ -155,22 +156,35 @@ class ChatSession:
         if self.read_line is not None:
             return self.read_line()
         if self.interactive:
-            return input(PROMPT)
+            try:
+                return input(PROMPT)
+            except UnicodeDecodeError:  # bytes that are not UTF-8 typed or pasted
+                self._print("(that line was not UTF-8 text; type it again)")
+                return ""
         self.out.write(PROMPT)
         self.out.flush()
-        line = self.stdin.readline()
+        buffer = getattr(self.stdin, "buffer", None)  # piped bytes that are not UTF-8 become �, not a crash
+        line = self.stdin.readline() if buffer is None else buffer.readline().decode("utf-8", "replace")
         if not line:
             raise EOFError
         return line.rstrip("\n")
 
-    def loop(self) -> int:
-        # the parser is loaded before the greeting (every reply needs it; from the cache it takes
-        # about a second), the rest in the background: the first reply does not wait for it
+    def prepare(self) -> None:
+        """Load the parser (every reply needs it; from the cache about a second on an idle
+        machine) and start loading the rest in the background, so the first reply does not wait
+        for it. :meth:`loop` calls it if the caller has not (the command line does, behind a
+        progress line)."""
+        if self._prepared:
+            return
+        self._prepared = True
         try:
             self.services.parser(self.world)
         except AssistantError as error:  # said again when the parser is used
             self._print(f"(language models: {error})")
         self.services.warm_up(self.world, background=True, scene=self.scene)
+
+    def loop(self) -> int:
+        self.prepare()
         readline = self._setup_readline()
         self._say(self.manager.greeting(), label="")
         if self.memory.load_problem:

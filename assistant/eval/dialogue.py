@@ -32,6 +32,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from assistant.eval.progress import Progress, no_progress
+from assistant.fileio import read_yaml
 
 EXPECT_KEYS = {"intent", "action", "outcome", "reply_has", "reply_lacks", "data", "memory"}
 TURN_KEYS = {"say", "wait", "expect", "sleep"}
@@ -60,7 +61,7 @@ def load_conversations(paths=None) -> list[dict]:
     out = []
     for f in files:
         try:
-            data = yaml.safe_load(f.read_text(encoding="utf-8"))
+            data = read_yaml(f.read_text(encoding="utf-8"))
         except yaml.YAMLError as error:
             raise DataFileError(f, "", f"not valid YAML ({error})") from None
         if not isinstance(data, dict) or not isinstance(data.get("conversations"), list):

@@ -59,7 +59,7 @@ class _Parsers:
         return self._by_world[world_name]
 
 
-def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = False, all_voices: bool = False,
+def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int | None = None, all_voices: bool = False,
                     kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
                     shard: tuple[int, int] = (1, 1), progress: Progress = no_progress) -> dict:
     """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor).
@@ -78,7 +78,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = 
         recogniser.recognise(speech_data.synthesise("hello", "en-us", 175))  # the open model is loaded
     parsers = _Parsers()
     threshold = DEFAULT_CONFIRM_BELOW if confirm_below is None else confirm_below
-    todo = speech_data.items(quick, all_voices, speech_data.SNRS_DB if snrs_db is None else snrs_db, kinds)
+    todo = speech_data.items(per_kind, all_voices, speech_data.SNRS_DB if snrs_db is None else snrs_db, kinds)
     todo = todo[shard[0] - 1::shard[1]]
     rows = []
     for n, item in enumerate(todo, start=1):
@@ -98,7 +98,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, quick: bool = 
             row["plan_equal"] = plan_of(parser, heard.transcript) == plan_of(parser, item.text)
         rows.append(row)
     recogniser.close()
-    head = {"engine": engine, "recogniser": recogniser.describe(), "quick": quick, "all_voices": all_voices,
+    head = {"engine": engine, "recogniser": recogniser.describe(), "per_kind": per_kind, "all_voices": all_voices,
             "confirm_below": threshold, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
     return report_of(rows, head)
 
@@ -115,7 +115,7 @@ def report_of(rows: list[dict], head: dict) -> dict:
 def merge_reports(reports: list[dict]) -> dict:
     """One report from the reports of the shards of one run (rows in utterance order)."""
     rows = sorted((r for rep in reports for r in rep["rows"]), key=lambda r: r["id"])
-    head = {k: v for k, v in reports[0].items() if k in ("engine", "recogniser", "quick", "all_voices", "confirm_below")}
+    head = {k: v for k, v in reports[0].items() if k in ("engine", "recogniser", "per_kind", "all_voices", "confirm_below")}
     head["wall_seconds"] = max(rep.get("wall_seconds", 0.0) for rep in reports)
     head["merged_from"] = len(reports)
     return report_of(rows, head)

@@ -100,14 +100,14 @@ def sentences(repo: Path | None = None) -> list[tuple[str, str, str]]:
     return out
 
 
-def items(quick: bool = False, all_voices: bool = False, snrs_db=SNRS_DB, kinds=None) -> list[Item]:
-    """The test utterances (``quick``: 4 sentences of each kind, for tests)."""
+def items(per_kind: int | None = None, all_voices: bool = False, snrs_db=SNRS_DB, kinds=None) -> list[Item]:
+    """The test utterances (``per_kind``: only the first that many sentences of each kind)."""
     pairs = [(v, r) for v in VOICES for r in RATES]
     chosen = sentences()
     if kinds:
         chosen = [s for s in chosen if s[1] in kinds]
-    if quick:
-        chosen = [s for k in ("command", "where", "chat") for s in [c for c in chosen if c[1] == k][:4]]
+    if per_kind is not None:
+        chosen = [s for k in ("command", "where", "chat") for s in [c for c in chosen if c[1] == k][:per_kind]]
     out = []
     for n, (text, kind, world) in enumerate(chosen):
         speakers = pairs if all_voices else [pairs[n % len(pairs)]]

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from assistant.errors import AssistantError
+from assistant.fileio import check_readable_file
 from assistant.robot.frames import CameraIntrinsics, CameraMount, DepthFrame
 
 #: largest depth image read, in pixels (a Kinect frame has 0.3 million; 4096 × 4096 = 16.8 million)
@@ -60,6 +61,7 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     check_mount(camera_height_m, tilt_deg)
     file = Path(path)
     try:
+        check_readable_file(file, "depth PNG file")  # a named pipe nobody writes to waited for ever
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # refused below, by our bound
             raw = _read_depth_pixels(Image.open(file), file)
@@ -70,12 +72,13 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     except Image.DecompressionBombError as error:
         raise AssistantError(f"{file}: refused, too many pixels for a depth frame ({error})") from None
     except (UnidentifiedImageError, OSError, ValueError, SyntaxError) as error:
-        raise AssistantError(f"{file}: not a readable image ({error})") from None
+        raise AssistantError(f"{file}: not a readable image ({error.strerror or error if isinstance(error, OSError) else error})") from None
     if raw.ndim != 2:
         raise AssistantError(f"{file}: expected a single-channel (16-bit) depth image, "
                              f"got shape {raw.shape}")
-    if not (depth_scale > 0 and math.isfinite(depth_scale)):
-        raise AssistantError(f"--depth-scale must be a positive number of metres per unit, got {depth_scale}")
+    if not (0 < depth_scale <= 1):  # (1e300 overflowed into warnings and an empty frame)
+        raise AssistantError(f"--depth-scale must be a positive number of metres per unit, at most 1 "
+                             f"(0.001 for millimetres), got {depth_scale}")
     fx, fy, cx, cy = intrinsics
     if not (fx > 0 and fy > 0):
         raise AssistantError(f"--intrinsics: focal lengths must be positive, got fx={fx}, fy={fy}")

@@ -16,6 +16,7 @@ from pathlib import Path
 
 
 from assistant.errors import AssistantError
+from assistant.fileio import check_writable_target, text_lines
 from assistant.geometry import Pose2D, angle_difference
 from assistant.policy.demonstration import Demonstration, environment_from_world
 from assistant.policy.freespace import FreeSpace
@@ -203,7 +204,7 @@ class Teaching:
 
 
 def check_out_path(out: str | Path | None) -> None:
-    """Refuse an ``--out`` that is a folder (``DIR/``) or whose folder cannot be made."""
+    """Refuse an ``--out`` that is a folder (``DIR/``), not .json, or in a folder that cannot hold it."""
     if out is None:
         return
     text = str(out)
@@ -211,6 +212,7 @@ def check_out_path(out: str | Path | None) -> None:
         raise AssistantError(f"--out {text!r} is a folder; give a file name such as {text.rstrip('/') or '.'}/demo.json")
     if Path(text).suffix.lower() != ".json":
         raise AssistantError(f"--out {text!r}: a demonstration is a .json file; give a name ending in .json")
+    check_writable_target(text, "demonstration")
 
 
 def run_teaching(rdt: str, world: str, scene: str = "original", start=None, reference=None, target=None,
@@ -227,4 +229,4 @@ def run_teaching(rdt: str, world: str, scene: str = "original", start=None, refe
         interactive = stdin.isatty() and sys.stdout.isatty()
     if interactive:
         return teaching.run_curses(out)
-    return teaching.run_lines(stdin, out, echo)
+    return teaching.run_lines(text_lines(stdin), out, echo)

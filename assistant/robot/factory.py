@@ -10,6 +10,12 @@ notebooks) builds its robot here, so a new adapter is usable everywhere at once.
 * ``replay:PATH`` — a recorded session played back;
 * ``p3dx:PORT`` — a Pioneer P3-DX on a serial port, with its Kinect.
 
+A use case runs in a home and passes every robot the same **home options** (:data:`HOME_OPTIONS`:
+``world``, ``scene``, ``start``, ``seed``, ``noise``); each adapter declares which of them it takes
+when it registers (the simulator all, a real P3-DX ``world`` and ``start`` — its odometry starts
+where the home's plan says it stands —, a recording none: it brings its own home), and
+:func:`make_robot` passes it only those. Other options are the adapter's own and go to it as given.
+
 Adapters live in higher layers (the simulator) or in optional sub-packages (hardware), so this
 module names them by import path and imports one only when it is asked for: the robot layer
 stays free of imports from above it, and a machine without the serial or camera libraries can
@@ -25,11 +31,17 @@ from dataclasses import dataclass
 from assistant.errors import AssistantError, UnknownNameError
 from assistant.robot.interface import Robot
 
-__all__ = ["RobotSpec", "make_robot", "parse_robot_spec", "register_adapter", "robot_schemes"]
+__all__ = ["HOME_OPTIONS", "RobotSpec", "make_robot", "parse_robot_spec", "register_adapter", "robot_schemes"]
+
+#: options a use case gives any robot: the home it runs in, the scene, where the robot starts,
+#: the random seed and whether odometry is noisy (see the module docstring)
+HOME_OPTIONS = frozenset({"world", "scene", "start", "seed", "noise"})
 
 #: scheme → "module:function"; the function takes (argument, **options) and returns an
 #: unconnected Robot. Filled below for the product's own adapters.
 _ADAPTERS: dict[str, str] = {}
+#: scheme → the home options its adapter takes
+_TAKES: dict[str, frozenset[str]] = {}
 
 
 @dataclass(frozen=True)
@@ -43,11 +55,15 @@ class RobotSpec:
         return f"{self.scheme}:{self.argument}" if self.argument else self.scheme
 
 
-def register_adapter(scheme: str, target: str) -> None:
-    """Make ``SCHEME:…`` specs build robots with ``target`` ("package.module:function")."""
+def register_adapter(scheme: str, target: str, takes=()) -> None:
+    """Make ``SCHEME:…`` specs build robots with ``target`` ("package.module:function"), which is
+    given the :data:`HOME_OPTIONS` named in ``takes`` (and every option that is not one)."""
     if ":" not in target:
         raise ValueError(f"adapter target must be 'module:function', got {target!r}")
+    if unknown := set(takes) - HOME_OPTIONS:
+        raise ValueError(f"not home options: {sorted(unknown)}; the home options are {sorted(HOME_OPTIONS)}")
     _ADAPTERS[scheme] = target
+    _TAKES[scheme] = frozenset(takes)
 
 
 def robot_schemes() -> list[str]:
@@ -72,14 +88,17 @@ def parse_robot_spec(spec: str | RobotSpec) -> RobotSpec:
 def make_robot(spec: str | RobotSpec = "sim", **options) -> Robot:
     """A new, unconnected robot for ``spec`` (see the module docstring).
 
-    ``options`` go to the adapter (the simulator takes ``world``, ``scene``, ``start``,
-    ``seed``, ``odometry_noise``…); an option an adapter does not take raises ``TypeError``
-    from that adapter. Use the robot in a ``with`` block so it is stopped and closed on every
-    way out.
+    ``options``: the :data:`HOME_OPTIONS` (each adapter gets those it takes; the others are
+    dropped, so a use case passes the same ones to any robot) and the adapter's own (the
+    simulator's ``odometry_noise``, a P3-DX's ``params``…; one an adapter does not take raises
+    ``TypeError`` from that adapter). Use the robot in a ``with`` block so it is stopped and
+    closed on every way out.
     """
     parsed = parse_robot_spec(spec)
     build = _load(parsed.scheme)
-    return build(parsed.argument, **options)
+    takes = _TAKES[parsed.scheme]
+    given = {k: v for k, v in options.items() if k not in HOME_OPTIONS or k in takes}
+    return build(parsed.argument, **given)
 
 
 def _load(scheme: str) -> Callable[..., Robot]:
@@ -97,6 +116,6 @@ def _examples() -> list[str]:
     return ["sim:apartment", "replay:PATH", "p3dx:/dev/ttyUSB0"]
 
 
-register_adapter("sim", "assistant.sim.robot:sim_robot_from_spec")
-register_adapter("replay", "assistant.robot.replay:replay_robot_from_spec")
-register_adapter("p3dx", "assistant.robot.p3dx:p3dx_robot_from_spec")
+register_adapter("sim", "assistant.sim.robot:sim_robot_from_spec", takes=HOME_OPTIONS)
+register_adapter("replay", "assistant.robot.replay:replay_robot_from_spec")  # a recording has its own home
+register_adapter("p3dx", "assistant.robot.p3dx:p3dx_robot_from_spec", takes=("world", "start"))

@@ -17,6 +17,7 @@ from typing import Any
 import yaml
 
 from assistant.errors import DataFileError
+from assistant.fileio import read_yaml
 from assistant.robot.frames import CameraIntrinsics, CameraMount
 
 __all__ = ["hardware_dir", "kinect_intrinsics", "kinect_mount", "load_hardware_file", "number"]
@@ -47,7 +48,7 @@ def load_hardware_file(name: str, folder: str | os.PathLike[str] | None = None) 
     except OSError as error:
         raise DataFileError(str(path), "", f"cannot read: {error.strerror}") from error
     try:
-        data = yaml.safe_load(text)
+        data = read_yaml(text)
     except yaml.YAMLError as error:
         raise DataFileError(str(path), "", f"not valid YAML: {error}") from error
     if not isinstance(data, dict):

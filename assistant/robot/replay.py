@@ -260,12 +260,10 @@ class ReplayRobot(Robot):
 def replay_robot_from_spec(argument: str = "", **options) -> ReplayRobot:
     """``replay:PATH`` → a :class:`ReplayRobot` of the recording at PATH.
 
-    Options are :class:`ReplayRobot`'s; ``world``, ``scene`` and ``seed``, which callers pass to
-    any robot, are ignored (the recording has its own world).
+    Options are :class:`ReplayRobot`'s (the factory passes it no home options: the recording has
+    its own home).
     """
     if not argument:
         raise AssistantError("say which recording to replay: replay:PATH (an .mcap file, a ROS bag or a "
                              "TUM RGB-D folder); sample recordings are in sample_scans/")
-    for ignored in ("world", "scene", "seed"):  # a recording has its own; callers pass them for any robot
-        options.pop(ignored, None)
     return ReplayRobot(argument, **options)

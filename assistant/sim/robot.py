@@ -126,7 +126,8 @@ def sim_robot_from_spec(argument: str = "", *, world: World | str | None = None,
     setting) unless ``odometry_noise`` is given. Other options go to :class:`SimRobot`.
     """
     name, _, scene_arg = argument.partition(":")
-    chosen_world = name or world or "apartment"
+    same_home = isinstance(world, World) and world.name == name  # the home already loaded
+    chosen_world = world if same_home else name or world or "apartment"
     chosen_scene = scene_arg or scene or "original"
     if noise and "odometry_noise" not in options:
         options["odometry_noise"] = OdometryNoise()

@@ -37,7 +37,7 @@ from typing import Any
 import yaml
 
 from assistant.errors import DataFileError, UnknownNameError
-from assistant.fileio import atomic_write_text
+from assistant.fileio import atomic_write_text, read_user_text, read_yaml
 from assistant.geometry import Pose2D, angles_close
 from assistant.world.catalogue import load_catalogue
 from assistant.world.sanity import geometry_problems
@@ -104,6 +104,9 @@ _EXPECT: dict[Callable[[Any], bool], str] = {
 }
 
 # key → (check, required)
+#: largest world file read (a home's plan is a few kilobytes; /dev/zero would fill the memory)
+MAX_WORLD_FILE_BYTES = 10_000_000
+
 ROOM_SCHEMA = {"name": (_text, True), "polygon": (_polygon, True), "open": (_boolean, False)}
 DOOR_SCHEMA = {"name": (_text, True), "centre": (_point, True), "width": (_number, True),
                "connects": (_pair_of_names, True)}
@@ -187,7 +190,7 @@ def load_world(name_or_path: str | Path) -> World:
     """Load a packaged world by name (``apartment``) or a world file by path."""
     path = resolve_world_path(name_or_path)
     try:
-        text = path.read_text(encoding="utf-8-sig")
+        text = read_user_text(path, MAX_WORLD_FILE_BYTES, "world file")
     except (OSError, UnicodeDecodeError) as error:
         raise WorldFileError(str(path), "", f"cannot read: {error}") from error
     return parse_world(text, source=str(path))
@@ -198,7 +201,7 @@ def parse_world(text: str, source: str = "<world>") -> World:
     label = Path(source).name if source and not source.startswith("<") else source
     check = _Checker(label)
     try:
-        data = yaml.safe_load(text)
+        data = read_yaml(text)
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f"line {mark.line + 1}" if mark is not None else ""

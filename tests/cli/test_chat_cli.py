@@ -117,3 +117,14 @@ def test_a_sighting_from_an_earlier_session_says_when_and_a_bad_entry_is_skipped
     child.sendcontrol("d")
     child.expect(pexpect.EOF)
     child.close()
+
+
+def test_the_chat_says_it_is_getting_ready_before_its_greeting(tmp_path):
+    """Loading the product, the home and the language models took 12–16 s under load with
+    nothing on screen; a progress line ticks meanwhile, then the greeting comes."""
+    child = spawn(tmp_path)
+    child.expect("getting ready to talk")
+    child.expect("apartment")  # the greeting
+    child.expect_exact(PROMPT)
+    child.sendeof()
+    child.expect(pexpect.EOF)

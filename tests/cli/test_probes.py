@@ -4,6 +4,7 @@ behaviour — never a traceback, a hang or a silent wrong answer."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -103,3 +104,132 @@ def test_a_pasted_page_is_refused_before_any_work(capsys):
     with pytest.raises(Exception, match="characters, more than"):
         parser.parse("mug " * 250_000)
     assert time.perf_counter() - started < 0.5
+
+
+def test_a_world_file_nested_too_deeply_is_one_line(tmp_path, capsys):
+    deep = tmp_path / "deep.yaml"
+    deep.write_text("rooms: " + "[" * 5000 + "]" * 5000 + "\n")
+    code, out, err = run(["world", str(deep), "--check"], capsys)
+    assert code == 2 and "nested too deeply" in err and len(err.strip().splitlines()) == 1, err
+
+
+@pytest.mark.parametrize("argv", [["world", "/dev/zero", "--check"], ["world", "FIFO", "--check"],
+                                  ["parse", "--batch", "/dev/zero", "--json"], ["fetch", "--batch", "/dev/zero", "--json"]])
+def test_endless_files_are_refused_before_reading(argv, tmp_path, capsys):
+    """``world /dev/zero`` read until it filled 21 GB; ``--batch /dev/zero`` never ended; a named
+    pipe nobody writes to waited for ever."""
+    import os
+
+    fifo = tmp_path / "fifo.yaml"
+    os.mkfifo(fifo)
+    argv = [str(fifo) if a == "FIFO" else a for a in argv]
+    code, out, err = run(argv, capsys)
+    assert code == 2 and ("is a device" in err or "is a pipe" in err) and out == "", err
+
+
+def test_a_batch_line_that_never_ends_ends_the_batch(tmp_path, capsys):
+    from assistant.cli.common import MAX_SKIPPED_BYTES
+
+    batch = tmp_path / "endless.txt"
+    batch.write_bytes(b"go to the kitchen\n" + b"x" * (MAX_SKIPPED_BYTES + 2**20))
+    code, out, err = run(["parse", "--batch", str(batch), "--json"], capsys)
+    assert code == 2 and "without a line end" in err
+    assert json.loads(out.splitlines()[0])["text"] == "go to the kitchen"  # earlier lines were answered
+
+
+@pytest.mark.parametrize("argv", [
+    ["sim", "render", "apartment", "--pose", "5,0,3.14", "--out", "/proc/view.png"],
+    ["record", "--robot", "sim:apartment", "/proc/session.mcap"],
+    ["teach", "couch-front-table", "--world", "training-home", "--out", "/proc/demo.json"],
+])
+def test_a_file_that_cannot_be_written_is_refused_before_any_work(argv, capsys, monkeypatch):
+    """``teach --out /proc/x.json`` taught, then failed to save with a traceback."""
+    import io
+    import sys
+
+    monkeypatch.setattr(sys, "stdin", io.StringIO("w 2\nq\n"))
+    code, out, err = run(argv, capsys)
+    assert code == 2 and "cannot write" in err and "/proc" in err, err
+
+
+def test_keys_piped_to_teach_that_are_not_utf8_are_reported_not_fatal(tmp_path, capsys, monkeypatch):
+    import io
+    import sys
+
+    monkeypatch.setenv("ASSISTANT_DATA", str(tmp_path / "data"))
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(b"w 2\n\xff\xfe\nq\n"), encoding="utf-8"))
+    code, out, err = run(["teach", "couch-front-table", "--world", "training-home", "--accept-outlier"], capsys)
+    assert code == 0 and "is not a key" in out + err
+
+
+def test_a_chat_fed_bytes_that_are_not_utf8_goes_on(tmp_path, capsys, monkeypatch):
+    import io
+    import sys
+
+    monkeypatch.setenv("ASSISTANT_DATA", str(tmp_path / "data"))
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(b"\xff\xfe\nwhich home am I in?\n"), encoding="utf-8"))
+    code, out, err = run(["chat", "--world", "apartment", "--perception", "oracle"], capsys)
+    assert code == 0 and "You're in the apartment" in out, out
+
+
+def test_a_recording_of_loud_noise_is_heard_as_something_or_nothing(tmp_path, capsys):
+    import wave
+
+    noise = tmp_path / "noise.wav"
+    with wave.open(str(noise), "wb") as handle:
+        handle.setnchannels(1)
+        handle.setsampwidth(2)
+        handle.setframerate(16000)
+        handle.writeframes(np.random.default_rng(0).integers(-32768, 32767, 48000).astype("<i2").tobytes())
+    code, out, err = run(["listen", str(noise), "--json"], capsys)  # was pocketsphinx's IndexError
+    assert code in (0, 2)
+
+
+def test_looking_around_in_tiny_steps_is_refused(tmp_path, capsys):
+    code, out, err = run(["record", "--robot", "sim:apartment", "--step-deg", "0.0001", str(tmp_path / "r.mcap")], capsys)
+    assert code == 2 and "--step-deg must be from 1" in err
+
+
+def test_depth_inputs_beyond_reason_are_refused(tmp_path, capsys):
+    import os
+
+    fifo = tmp_path / "depth.png"
+    os.mkfifo(fifo)  # waited for ever
+    frame = tmp_path / "max.png"
+    Image.fromarray(np.full((48, 64), 65535, np.uint16)).save(frame)
+    sample = str(Path(__file__).resolve().parents[2] / "sample_scans" / "apartment_fetch.mcap")
+    for argv, words in (
+        (["perceive", "--depth", str(fifo), "--intrinsics", "525,525,32,24", "--depth-scale", "0.001"], "is a pipe"),
+        (["perceive", "--depth", str(frame), "--intrinsics", "525,525,32,24", "--depth-scale", "1e300"], "at most 1"),
+        (["perceive", "--replay", sample, "--at", "1e300", "--json"], "a recording is at most"),  # was OverflowError
+    ):
+        code, out, err = run(argv, capsys)
+        assert code == 2 and words in err, err
+
+
+def test_a_model_cache_that_cannot_be_a_folder_is_one_line(tmp_path, monkeypatch):
+    """``ASSISTANT_CACHE`` naming a file (or /proc/x) was a FileExistsError traceback at the
+    first model's cache; every cache user goes through ``cache_dir``."""
+    from assistant.errors import AssistantError
+    from assistant.fileio import cache_dir
+
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder")
+    for place in (blocker, "/proc/nope"):
+        monkeypatch.setenv("ASSISTANT_CACHE", str(place))
+        with pytest.raises(AssistantError, match="ASSISTANT_CACHE"):
+            cache_dir()
+
+
+@pytest.mark.parametrize("folds", ["-1", "1"])
+def test_tagging_folds_that_mean_nothing_are_refused(folds, capsys):
+    code, out, err = run(["eval", "tagging", "--folds", folds], capsys)
+    assert code == 2 and "give 0" in err
+
+
+def test_a_where_request_naming_a_list_is_refused_not_searched_for(tmp_path, capsys):
+    batch = tmp_path / "where.jsonl"
+    batch.write_text('{"object": ["mug"], "world": "apartment"}\n{"object": "mug", "world": ["apartment"]}\n')
+    code, out, err = run(["where", "--batch", str(batch), "--json"], capsys)
+    answers = [json.loads(line) for line in out.splitlines()]
+    assert code == 0 and len(answers) == 2 and all("are names, as text" in a["error"] for a in answers)

@@ -42,7 +42,7 @@ def test_sentences_and_rotation_cover_kinds_voices_rates():
     all_items = items(snrs_db=(None,))
     assert {(i.voice, i.rate) for i in all_items} == {(v, r) for v in ("en-us", "en-us+f3", "en-us+m3", "en-us-nyc")
                                                       for r in (140, 175)}
-    quick = items(quick=True)
+    quick = items(per_kind=4)
     assert len(quick) == 36 and {i.noise for i in quick} == {"clean", "20 dB", "10 dB"}
 
 
@@ -61,7 +61,7 @@ def test_quick_evaluation_of_where_questions_gives_rows_and_groups():
     pytest.importorskip("pocketsphinx")
     from assistant.eval.speech import evaluate_speech
 
-    report = evaluate_speech(quick=True, kinds=["where"], snrs_db=(None, 10.0), open_fallback=False)
+    report = evaluate_speech(per_kind=4, kinds=["where"], snrs_db=(None, 10.0), open_fallback=False)
     assert report["utterances"] == 8 and len(report["rows"]) == 8
     assert set(report["groups"]["noise"]) == {"clean", "10 dB"}
     row = report["rows"][0]

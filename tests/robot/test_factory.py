@@ -1,5 +1,7 @@
 """The robot factory: specs, the simulator adapter, clear errors."""
 
+import sys
+
 import pytest
 
 from assistant.errors import AssistantError, UnknownNameError
@@ -35,3 +37,41 @@ def test_sim_spec_builds_an_unconnected_simulator_in_the_named_world_and_scene()
 def test_sim_noise_option_turns_on_odometry_noise():
     assert make_robot("sim:apartment", noise=True).base.odometry_noise is not None
     assert make_robot("sim:apartment").base.odometry_noise is None
+
+
+def test_each_adapter_gets_the_home_options_it_takes(monkeypatch):
+    """A use case passes the same home options to any robot; the factory gives each adapter the
+    ones it registered for (a recording none, a real base its start) and the adapter's own."""
+    from assistant.geometry import Pose2D
+    from assistant.robot import factory
+    from assistant.world import load_world
+
+    seen = {}
+    module = type(sys)("fake_adapters")
+    module.build = lambda argument, **options: seen.setdefault(argument, options)
+    monkeypatch.setitem(sys.modules, "fake_adapters", module)
+    monkeypatch.setitem(factory._ADAPTERS, "fake", "fake_adapters:build")
+    monkeypatch.setitem(factory._TAKES, "fake", frozenset({"start"}))
+    home = {"world": "apartment", "scene": "original", "start": Pose2D(1, 2, 0), "seed": 3, "noise": True}
+    make_robot("fake:one", **home, speed=0.2)
+    assert seen["one"] == {"start": Pose2D(1, 2, 0), "speed": 0.2}
+    with pytest.raises(ValueError, match="not home options"):
+        factory.register_adapter("fake", "fake_adapters:build", takes=("port",))
+
+    apartment = load_world("apartment")
+    robot = make_robot("sim", world=apartment, scene="modified", start=None, seed=1, noise=True)
+    assert robot.world is apartment and robot.scene == "modified" and robot.base.odometry_noise is not None
+
+
+def test_a_real_base_starts_where_the_home_says_unless_told(monkeypatch):
+    from assistant.geometry import Pose2D
+    from assistant.robot.p3dx import robot as p3dx
+    from assistant.world import load_world
+
+    monkeypatch.setattr(p3dx, "P3DX", lambda port, camera, **options: options)
+    apartment = load_world("apartment")
+    assert make_robot("p3dx:/dev/null:nocamera", world=apartment, seed=0, noise=True) == {"start": apartment.start}
+    assert make_robot("p3dx:/dev/null:nocamera", world="apartment")["start"] == apartment.start
+    there = Pose2D(1.0, 2.0, 0.5)
+    assert make_robot("p3dx:/dev/null:nocamera", world=apartment, start=there)["start"] == there
+    assert make_robot("p3dx:/dev/null:nocamera") == {"start": None}

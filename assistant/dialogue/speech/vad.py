@@ -82,7 +82,9 @@ class UtteranceDetector:
         """End of the stream: the utterance still open, if any."""
         done: list[Utterance] = []
         if self._ep.in_speech:
-            rest = self._ep.end_stream(to_pcm16(self._pending))
+            # (pocketsphinx reads past an empty last frame: IndexError on 3 s of loud noise)
+            last = self._pending if len(self._pending) else np.zeros(1, dtype=np.float32)
+            rest = self._ep.end_stream(to_pcm16(last))
             if rest:
                 self._speech.append(from_pcm16(rest))
             self._end_s = self._ep.speech_end

@@ -207,13 +207,16 @@ class P3DX(Robot):
 
 
 def p3dx_robot_from_spec(argument: str = "", *, camera: DepthCamera | None | str = "kinect",
-                         **options) -> P3DX:
+                         world=None, start: Pose2D | None = None, **options) -> P3DX:
     """The ``p3dx`` adapter of :func:`assistant.robot.factory.make_robot`.
 
     ``argument`` is the serial port (``/dev/ttyUSB0``), optionally followed by ``:nocamera``
     for a base without its camera. ``camera`` is a camera object, None for a base without one,
     or ``"kinect"`` (the default) for the Kinect adapter when it can be loaded — when it cannot,
-    the base comes without a camera and says why in the log. Other options go to :class:`P3DX`.
+    the base comes without a camera and says why in the log. ``start`` is where the base stands
+    when it connects; by default the start pose of ``world`` (a :class:`~assistant.world.World`
+    or a home's name) when one is given — the robot is placed there in the home — else the
+    origin. Other options go to :class:`P3DX`.
     """
     port, _, flag = argument.partition(":")
     port = port or "/dev/ttyUSB0"
@@ -223,7 +226,13 @@ def p3dx_robot_from_spec(argument: str = "", *, camera: DepthCamera | None | str
         camera = None
     if isinstance(camera, str):
         camera = _named_camera(camera)
-    return P3DX(port, camera, **options)
+    if start is None and world is not None:
+        if isinstance(world, str):
+            from assistant.world import load_world
+
+            world = load_world(world)
+        start = world.start
+    return P3DX(port, camera, start=start, **options)
 
 
 def _named_camera(name: str) -> DepthCamera | None:
