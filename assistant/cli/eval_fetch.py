@@ -15,7 +15,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="perception mode(s) to run (default: both)")
     parser.add_argument("--limit", type=int, default=None, metavar="N", help="only the first N commands")
     parser.add_argument("--world", metavar="NAME", help="only the commands of this home")
-    parser.add_argument("--scene", choices=("original", "modified"), help="only this scene")
+    parser.add_argument("--scene", help="only this scene (original, modified, lived-in)")
     parser.add_argument("--dev-set", metavar="FILE", default=None,
                         help=f"JSON lines {{{', '.join(REQUIRED)}}} (default: {DEFAULT_DEV_SET.name} in corpus/)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None)
