@@ -17,7 +17,7 @@ from assistant.app.result import Result, Status
 from assistant.app.robots import DEFAULT_ROBOT, open_robot, spec_world
 from assistant.app.stopping import StoppableRobot, Stopped
 from assistant.app.teaching import teach
-from assistant.app.where import Finder, known_object_names, world_environment
+from assistant.app.where import Finder, asked_object, known_object_names, world_environment
 
-__all__ = ["DEFAULT_ROBOT", "Fetcher", "Finder", "Result", "Status", "StoppableRobot", "Stopped", "known_object_names",
-           "open_robot", "spec_world", "teach", "world_environment"]
+__all__ = ["DEFAULT_ROBOT", "Fetcher", "Finder", "Result", "Status", "StoppableRobot", "Stopped", "asked_object",
+           "known_object_names", "open_robot", "spec_world", "teach", "world_environment"]
