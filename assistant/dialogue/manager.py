@@ -140,6 +140,8 @@ class DialogueManager:
         if name in ("yes", "no"):
             return self._turn(text, name, "OK." if name == "no" else
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
+        if name == "bye":  # the conversation ends (the REPL leaves on this action)
+            return self._turn(text, name, "Goodbye.", "leave", "answered", start)
         if name == "greet":
             return self._turn(text, name, "Hello! What can I do for you?", start=start)
         if name == "thanks":

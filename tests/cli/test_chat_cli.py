@@ -117,3 +117,14 @@ def test_a_sighting_from_an_earlier_session_says_when_and_a_bad_entry_is_skipped
     child.sendcontrol("d")
     child.expect(pexpect.EOF)
     child.close()
+
+
+def test_bye_ends_the_chat(tmp_path):
+    child = spawn(tmp_path)
+    child.expect_exact(PROMPT)
+    child.sendline("ok bye")
+    child.expect("Goodbye")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert [t["intent"] for t in transcript(tmp_path)["turns"]] == ["bye"]
