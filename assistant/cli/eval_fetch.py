@@ -53,7 +53,7 @@ def print_report(summary: dict) -> None:
     rows = [[g["perception"], g["world"], g["scene"], *(g[o] for o in OUTCOMES), g["all"],
              f"{100 * g['success_rate']:.1f}%"] for g in summary["groups"]]
     for mode, row in summary["totals"].items():
-        rows.append([mode, "ALL", "both", *(row[o] for o in OUTCOMES), row["all"], f"{100 * row['success_rate']:.1f}%"])
+        rows.append([mode, "ALL", "all", *(row[o] for o in OUTCOMES), row["all"], f"{100 * row['success_rate']:.1f}%"])
     print_table(rows, header)
     threshold = summary["threshold"]
     print(f"success: target object ≥ {threshold['min_pixels']} pixels of the final depth frame within "
