@@ -20,8 +20,8 @@ from assistant.app.robots import DEFAULT_ROBOT, open_robot, spec_world
 from assistant.app.scans import ScanSource, analyse_scan, open_scan, scan_source, scan_sources
 from assistant.app.stopping import StoppableRobot, Stopped
 from assistant.app.teaching import teach
-from assistant.app.where import Finder, known_object_names, world_environment
+from assistant.app.where import Finder, asked_object, known_object_names, world_environment
 
 __all__ = ["DEFAULT_ROBOT", "Fetcher", "Finder", "Result", "ScanSource", "Status", "StoppableRobot", "Stopped",
-           "analyse_scan", "known_object_names", "open_robot", "open_scan", "scan_source", "scan_sources",
-           "spec_world", "teach", "world_environment"]
+           "analyse_scan", "asked_object", "known_object_names", "open_robot", "open_scan", "scan_source",
+           "scan_sources", "spec_world", "teach", "world_environment"]

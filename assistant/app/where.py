@@ -31,7 +31,10 @@ from assistant.generation.types import SEARCH_MODES
 from assistant.geometry import Pose2D
 from assistant.perception.objects import SimObjectDetector
 
-__all__ = ["Finder", "known_object_names", "world_environment"]
+__all__ = ["Finder", "asked_object", "known_object_names", "world_environment"]
+
+#: words said before the thing asked about that are no part of its name ("my keys", "the phone")
+POSSESSIVES = frozenset({"my", "the", "a", "an", "your", "our", "his", "her", "their", "some", "any", "mine"})
 
 #: (world name, scene) → (the World, its world-file furniture); the World is kept so that a
 #: world of the same name loaded again (another file) is not served the old furniture
@@ -50,6 +53,18 @@ def world_environment(world, scene: str) -> list:
     if hit is None or hit[0] is not world:
         hit = _ENV_CACHE[key] = (world, oracle_environment(world, scene))
     return hit[1]
+
+
+def asked_object(said: str) -> str:
+    """The name to look for when a person asks for ``said``: the catalogue's name of the thing
+    ("my keys" → ``keys``, "phone" → ``cell phone``, "key" → ``keys``), else the words in the
+    singular without "my"/"the" ("my umbrellas" → ``umbrella``)."""
+    from assistant.grounding.objects import object_kind
+
+    words = " ".join(str(said).lower().split()).split()
+    while len(words) > 1 and words[0] in POSSESSIVES:
+        words.pop(0)
+    return object_kind(" ".join(words)) if words else ""
 
 
 def known_object_names(world) -> list[str]:
@@ -110,7 +125,7 @@ class Finder:
             raise UnknownNameError("search", str(search), SEARCH_MODES)
         w = load_world(world) if isinstance(world, str) else world
         scene = w.scene(scene).name
-        key = " ".join(str(name).lower().split())
+        key = asked_object(name)
         pose = w.start if listener is None else listener if isinstance(listener, Pose2D) else Pose2D(*listener)
         style = style or (style_for_question(question) if question else "static")
         if remembered is not None or search == "oracle":

@@ -23,7 +23,7 @@ def register(subparsers) -> None:
                     "something is, how to get to it, or to learn a place; say 'help' inside.")
     parser.add_argument("--world", default=None, help="world name or file (default: the one a sim:WORLD robot "
                                                      "names, else apartment)")
-    parser.add_argument("--scene", default="original", help="scene: original or modified")
+    parser.add_argument("--scene", default="original", help="scene: original, modified or lived-in")
     add_robot_option(parser)
     parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
                         help="sensed: furniture detector on depth frames (default); oracle: the world "

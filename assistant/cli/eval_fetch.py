@@ -18,7 +18,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="perception mode(s) to run (default: both)")
     parser.add_argument("--limit", type=int, default=None, metavar="N", help="only the first N commands")
     parser.add_argument("--world", metavar="NAME", help="only the commands of this home")
-    parser.add_argument("--scene", choices=("original", "modified"), help="only this scene")
+    parser.add_argument("--scene", help="only this scene (original, modified, lived-in)")
     parser.add_argument("--dev-set", metavar="FILE", default=None,
                         help=f"JSON lines {{{', '.join(REQUIRED)}}} (default: {DEFAULT_DEV_SET.name} in corpus/)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None)
@@ -56,7 +56,7 @@ def print_report(summary: dict) -> None:
     rows = [[g["perception"], g["world"], g["scene"], *(g[o] for o in OUTCOMES), g["all"],
              f"{100 * g['success_rate']:.1f}%"] for g in summary["groups"]]
     for mode, row in summary["totals"].items():
-        rows.append([mode, "ALL", "both", *(row[o] for o in OUTCOMES), row["all"], f"{100 * row['success_rate']:.1f}%"])
+        rows.append([mode, "ALL", "all", *(row[o] for o in OUTCOMES), row["all"], f"{100 * row['success_rate']:.1f}%"])
     print_table(rows, header)
     threshold = summary["threshold"]
     print(f"success: target object ≥ {threshold['min_pixels']} pixels of the final depth frame within "

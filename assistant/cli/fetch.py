@@ -10,7 +10,6 @@ from assistant.cli.common import (MAX_SEED, add_json_flag, add_robot_option, che
                                   out_file, require_text_or_batch, run_batch, seed_int)
 
 PERCEPTION_MODES = ("sensed", "oracle")
-SCENES = ("original", "modified")
 
 
 def register(subparsers) -> None:
@@ -23,7 +22,9 @@ def register(subparsers) -> None:
     )
     parser.add_argument("text", nargs="*", help="the command (omit with --batch)")
     parser.add_argument("--world", metavar="NAME", help="world name or file (required without --batch)")
-    parser.add_argument("--scene", choices=SCENES, default="original", help="furniture placement (default: original)")
+    parser.add_argument("--scene", default="original",
+                        help="furniture placement: original (default), modified or lived-in (the study's "
+                             "homes; assistant world NAME --scene S shows one)")
     parser.add_argument("--perception", choices=PERCEPTION_MODES, default="sensed",
                         help="sensed: furniture detector on depth frames (default); oracle: the world "
                              "file's furniture (to separate language from perception errors)")

@@ -26,7 +26,7 @@ def register(subparsers) -> None:
     )
     parser.add_argument("object", nargs="?", help="object name, e.g. mug or 'glasses case'")
     parser.add_argument("--world", help="world name (apartment, hk-studio, …) or a world file path")
-    parser.add_argument("--scene", default="original", help="scene: original or modified")
+    parser.add_argument("--scene", default="original", help="scene: original, modified or lived-in")
     parser.add_argument("--listener", type=parse_pose, metavar="X,Y,HEADING",
                         help="where the person asking stands (metres, metres, radians; default: "
                              "the world's start pose, where the robot was asked); the room is not "

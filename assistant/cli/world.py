@@ -13,7 +13,7 @@ def register(subparsers) -> None:
         description="Describe a world (a packaged home by name, or a world file by path).",
     )
     parser.add_argument("name", help="world name (apartment, hk-studio, …) or a world file path")
-    parser.add_argument("--scene", default="original", help="scene: original or modified")
+    parser.add_argument("--scene", default="original", help="scene: original, modified or lived-in")
     add_json_flag(parser)
     parser.add_argument("--check", action="store_true",
                         help="check objects lie on furniture, furniture in rooms, rooms reachable")

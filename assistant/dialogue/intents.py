@@ -29,6 +29,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bhave you seen\b",
                r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b")),
+    ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
+             r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),
     ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
              r"yes please|go and check|check|sure thing)$",)),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",)),

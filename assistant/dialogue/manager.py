@@ -140,6 +140,8 @@ class DialogueManager:
         if name in ("yes", "no"):
             return self._turn(text, name, "OK." if name == "no" else
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
+        if name == "bye":  # the conversation ends (the REPL leaves on this action)
+            return self._turn(text, name, "Goodbye.", "leave", "answered", start)
         if name == "greet":
             return self._turn(text, name, "Hello! What can I do for you?", start=start)
         if name == "thanks":
@@ -223,11 +225,11 @@ class DialogueManager:
         place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", description.rstrip("."), flags=re.I)
         if style == "static":
             self.pending = {"kind": "confirm", "command": f"bring me the {obj} {place}", "object": obj}
-            offer = " Shall I go and get it?"
+            offer = f" Shall I go and get {it_them(obj)}?"
         else:
             offer = ""
-        reply = (f"{description} (I haven't seen it myself yet — that is from the simulator's map of the "
-                 f"home.){offer}")
+        reply = (f"{description} (I haven't seen {it_them(obj)} myself yet — that is from the simulator's map "
+                 f"of the home.){offer}")
         return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
                           source="simulator", style=style, nodes=list(result.nodes), found=True)
 

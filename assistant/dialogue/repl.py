@@ -220,6 +220,8 @@ class ChatSession:
                         self._say(turn.reply)
                     if turn.action == "teach" and turn.outcome == "started":
                         self._teach(turn)
+                    if turn.action == "leave":  # "bye": the reply said goodbye
+                        break
                 except KeyboardInterrupt:  # Ctrl-C without the watcher (not the main thread)
                     self._on_interrupt()
                     continue

@@ -11,16 +11,17 @@ HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table 
              "in the living room\"), ask where something is (\"where is my mug?\", \"have you seen my "
              "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
              "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
-             "\"repeat that\", \"which home am I in\" or \"start over\".")
+             "\"repeat that\", \"which home am I in\", \"start over\" or \"bye\".")
 
 
 @dataclass
 class Turn:
     """One exchange: what was said, the intent, the robot's reply, what it did and how it ended.
 
-    ``action``: ``answer``, ``describe``, ``fetch``, ``search``, ``clarify``, ``teach``, ``stop``, ``none``;
-    ``outcome``: ``answered``, ``asked``, ``started``, ``success``, ``failed``, ``stopped``,
-    ``cancelled``, ``not_understood``, ``busy``; ``seconds``: time to the reply (wall clock).
+    ``action``: ``answer``, ``describe``, ``fetch``, ``search``, ``clarify``, ``teach``, ``stop``,
+    ``leave`` (the conversation ends: "bye"), ``none``; ``outcome``: ``answered``, ``asked``,
+    ``started``, ``success``, ``failed``, ``stopped``, ``cancelled``, ``not_understood``, ``busy``;
+    ``seconds``: time to the reply (wall clock).
     """
 
     text: str

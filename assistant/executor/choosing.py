@@ -8,6 +8,12 @@ times how well it fits the node's other pairs), times how well the target fits t
 about it (:class:`Said`: "the desk", "the round table"). When no pair can be chosen the fetch searches the likely
 surfaces (:meth:`PlaceChooser.likely_surfaces`).
 
+Objects are landmarks too ("the table next to the lamp", "by the keys"): an object the robot's
+object detector has seen in the room (``seen``, the task's latest sightings) stands among the
+furniture as a small disc where it was seen (:func:`landmark_entity`), named as the object is, so
+``resolve`` reads "beside the keys" from it as from any chair. An object not seen is no
+reference: the node's furniture pairs decide, or the likely surfaces.
+
 The chooser reads only the floor plan, the perceived furniture and the pose the command was
 said from — no robot — so it is tested directly.
 """
@@ -15,16 +21,39 @@ said from — no robot — so it is tested directly.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 from assistant.executor.describe import description_fit
 from assistant.executor.sensing import FurnitureSource, entity_centre, entity_room
-from assistant.geometry import Pose2D, wrap_angle
+from assistant.geometry import Pose2D, ellipse, wrap_angle
+from assistant.perception.objects import Sighting
 from assistant.spatial.resolve import resolve
 from assistant.world import Entity, World
+from assistant.world.entity import EntityKind
 
-__all__ = ["NOTHING_SAID", "PlaceChooser", "Said"]
+__all__ = ["LANDMARK_PREFIX", "NOTHING_SAID", "PlaceChooser", "Said", "is_landmark", "landmark_entity"]
+
+#: metres: the radius of the disc an object seen stands for as a landmark
+LANDMARK_RADIUS_M = 0.1
+#: the id prefix of an object seen, standing as a landmark (``object:keys``)
+LANDMARK_PREFIX = "object:"
+
+
+def landmark_entity(sighting: Sighting, grid) -> Entity:
+    """An object the object detector saw, as an entity of ``grid`` a relation can be read from:
+    a disc of :data:`LANDMARK_RADIUS_M` where it was seen, named as the object, without a front
+    (so "to the left of the lamp" is the viewer's left)."""
+    centre = Pose2D(sighting.x_m, sighting.y_m, 0.0)
+    disc = ellipse(centre, 2 * LANDMARK_RADIUS_M, 2 * LANDMARK_RADIUS_M, segments=12)
+    return Entity.from_polygon(LANDMARK_PREFIX + sighting.name, sighting.name, EntityKind.SHORT_TERM, disc,
+                               grid, None, room=sighting.room,
+                               attributes={"x": sighting.x_m, "y": sighting.y_m})
+
+
+def is_landmark(entity) -> bool:
+    """Whether ``entity`` is an object seen standing as a landmark (:func:`landmark_entity`)."""
+    return isinstance(entity, Entity) and entity.id.startswith(LANDMARK_PREFIX)
 
 
 
@@ -56,16 +85,30 @@ class PlaceChooser:
 
     world: World
     perception: FurnitureSource
+    #: object name → the latest placed sighting of the robot's object detector (the task's ``seen``)
+    seen: Mapping[str, Sighting] = field(default_factory=dict)
 
     def in_room(self, room: str, word: str | None = None) -> list[Entity]:
-        """The perceived furniture in ``room`` (named ``word`` if given)."""
+        """The perceived furniture in ``room`` and the objects seen there as landmarks (named
+        ``word`` if given)."""
         out = []
         for e in self.perception.furniture():
             if word is not None and e.name != word:
                 continue
             if entity_room(self.world, e) == room:
                 out.append(e)
-        return out
+        return out + self.landmarks(room, word)
+
+    def landmarks(self, room: str, word: str | None = None) -> list[Entity]:
+        """The objects the object detector has seen in ``room`` (named ``word`` if given), as
+        :func:`landmark_entity`; none before any furniture is perceived (nothing to place them on)."""
+        found = [s for s in self.seen.values() if s.room == room and (word is None or s.name == word)]
+        if not found:
+            return []
+        furniture = self.perception.furniture()
+        if not furniture:
+            return []
+        return [landmark_entity(s, furniture[0].grid) for s in sorted(found, key=lambda s: s.name)]
 
     def choose_pair(self, rdt, room: str, pose: Pose2D, others=(), said: Said = NOTHING_SAID):
         """The (reference, target, fit) that best fit ``rdt`` among the furniture seen in
@@ -83,7 +126,7 @@ class PlaceChooser:
     def likely_surfaces(self, room: str, word: str, pose: Pose2D, said: Said = NOTHING_SAID) -> list[Entity]:
         """Furniture of the target's kind (``word``; any table when none is seen) in the room,
         the one most in view from ``pose`` and fitting ``said`` first."""
-        items = self.in_room(room, word) or self.in_room(room, "table")
+        items = [e for e in self.in_room(room, word) or self.in_room(room, "table") if not is_landmark(e)]
 
         def rank(e):
             x, y = entity_centre(e)

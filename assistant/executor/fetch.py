@@ -38,7 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from assistant.errors import UnknownNameError
-from assistant.executor.choosing import NOTHING_SAID, PlaceChooser, Said
+from assistant.executor.choosing import NOTHING_SAID, PlaceChooser, Said, is_landmark
 from assistant.rdt import PLACE_REFERENCES
 from assistant.spatial.resolve import DIRECTION_ANGLES, WALL_ANGLES
 from assistant.executor.context import BudgetSpent, TaskContext, moved_enough
@@ -104,7 +104,7 @@ class FetchTask:
     # ------------------------------------------------------------------ set-up
     def _setup(self, ctx: TaskContext) -> None:
         self.ctx = ctx
-        self.chooser = PlaceChooser(ctx.world, ctx.perception)
+        self.chooser = PlaceChooser(ctx.world, ctx.perception, ctx.seen)  # objects seen are landmarks too
         self._last_perceived: Pose2D | None = None
         self._perceive_room: str | None = None
         self.surveyor = Surveyor(ctx, self._on_frame, self.survey_range_m, self.max_unseen_share)
@@ -397,7 +397,8 @@ class FetchTask:
 
     def _move_by_policy(self, rdt: str, reference, target, report: NodeReport):
         pose = self.ctx.pose()
-        env = environment_items(self.ctx.world, self.ctx.perception.furniture())
+        landmark = [reference] if is_landmark(reference) else []  # an object seen: "next to the keys"
+        env = environment_items(self.ctx.world, self.ctx.perception.furniture() + landmark)
         ref_id = reference if isinstance(reference, str) or reference is None else reference.id
         tar_id = None if target is None else target.id
         goal, score_map = None, None

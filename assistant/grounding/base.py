@@ -123,15 +123,14 @@ class BaseGrounder:
 
 
 def grounding_accuracy(grounder, gold: Sequence[LabelledCommand]) -> dict[str, float]:
-    """Accuracy of ``grounder`` on labelled commands (see :meth:`BaseGrounder.accuracy`)."""
+    """Accuracy of ``grounder`` on labelled commands (see :meth:`BaseGrounder.accuracy`). Each
+    command is grounded on its own, as the parser grounds one: what one command said (a room
+    named) must not carry into the next."""
     right = dict.fromkeys(FIELDS, 0)
     chunks = commands_right = 0
-    records = [r for c in gold for r in c.records]
-    predicted = iter(grounder.ground(records))
     for command in gold:
         all_right = True
-        for truth in command.groundings:
-            guess = next(predicted)
+        for truth, guess in zip(command.groundings, grounder.ground(command.records)):
             chunks += 1
             for f in FIELDS:
                 ok = guess.get(f) == truth.get(f)

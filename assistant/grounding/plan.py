@@ -14,7 +14,9 @@ The chunk tree is walked forward, in the order the words were said:
 * a reference chunk outside any target chunk is a node of its own: ``move``/``room``/``wall``
   /``door`` references give ``…-non`` nodes (dynamic); a ``robot`` or furniture reference
   with no target named ("the fork will be on the right") gives a node whose target is implied —
-  a table, where people put small things (4.3 II.B) — and consecutive such pairs share it.
+  a table, where people put small things (4.3 II.B) — and consecutive such pairs share it;
+  said right after a target chunk beside it ("[on the little table] [next to the keys]") it is
+  a pair of that target's node.
 
 The plan then says what it could not use and what is missing or ambiguous (:data:`FLAG_HELP`).
 """
@@ -194,6 +196,7 @@ class _PlanWalk:
         self.loose.clear()
 
     def visit(self, items, enclosing: _NodeBuilder | None, parent_key: int) -> None:
+        after: _NodeBuilder | None = None  # the node of the target chunk said just before
         for item in items:
             if not hasattr(item, "label"):
                 if parent_key == 0:
@@ -205,10 +208,12 @@ class _PlanWalk:
             self.room_said = self.room_said or bool(g.room)
             if g.target:
                 self._target_chunk(item, g)
+                after = self.builders[-1]
             elif g.reference:
-                self._reference_chunk(item, g, enclosing, parent_key)
+                self._reference_chunk(item, g, enclosing, parent_key, after)
                 self.visit(item.items, enclosing, id(item))
             else:
+                after = None
                 self.visit(item.items, enclosing, id(item))
 
     def _target_chunk(self, item, g: ChunkGrounding) -> None:
@@ -222,7 +227,11 @@ class _PlanWalk:
         # move steps nested in the target chunk were appended first; the node follows
         self.builders.append(node)
 
-    def _reference_chunk(self, item, g: ChunkGrounding, enclosing: _NodeBuilder | None, parent_key: int) -> None:
+    def _reference_chunk(self, item, g: ChunkGrounding, enclosing: _NodeBuilder | None, parent_key: int,
+                         after: _NodeBuilder | None = None) -> None:
+        """A reference chunk: a step, a pair of the node it is nested in, a pair of the target
+        chunk said just before it (``after``: "[on the table] [next to the lamp]"), or a node of
+        its own with a table implied."""
         reference, direction = self.pair_of(g)
         if reference == "move" and enclosing is not None and not _has_verb(item.own_tokens):
             # "on the table just ahead of you": no step is asked for, the place is said from
@@ -243,7 +252,9 @@ class _PlanWalk:
                         enclosing.pairs.append((reference, extra))
         else:
             last = self.builders[-1] if self.builders else None
-            if last is not None and last.implied and last.parent_id == parent_key:
+            if after is not None and after is last:  # the table said just before: "… next to the lamp"
+                last.pairs.append((reference, direction))
+            elif last is not None and last.implied and last.parent_id == parent_key:
                 last.pairs.append((reference, direction))
             else:
                 self.builders.append(_NodeBuilder("table", [(reference, direction)], None, True, parent_key))

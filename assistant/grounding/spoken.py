@@ -83,7 +83,7 @@ def spoken_groundings(records: Sequence[ChunkRecord], groundings: Sequence[Chunk
         g = _listener_rules(label, words, g)
         if g.room is not None and label in ROOM_LABELS and room_said and not _names_room_or_side(record):
             g = replace(g, room=None)
-        g = _motion_rules(label, words, g)
+        g = _motion_rules(label, words, _passing(record, label, words, g))
         room_said = room_said or g.room is not None
         out.append(g)
     return out
@@ -145,6 +145,17 @@ def _motion_rules(label: str, words: list[str], g: ChunkGrounding) -> ChunkGroun
     if g.reference == "room" and said & LISTENER and not said & ROOM_WORDS and g.direction in SIDES:
         return replace(g, reference="robot")
     return g
+
+
+def _passing(record: ChunkRecord, label: str, words: list[str], g: ChunkGrounding) -> ChunkGrounding:
+    """"pass the couch" chunked as a room phrase that names no room: the far side of the couch
+    (the passing rule of :func:`_motion_rules` reads it from a reference phrase)."""
+    said = set(words)
+    if label not in ROOM_LABELS or g.room is not None or not said & PASSING_WORDS or said & ROOM_WORDS:
+        return g
+    canon, _ = canonical_tokens(record.words, record.pos)
+    furniture = [FURNITURE_WORDS[w] for w in canon if w in FURNITURE_WORDS]
+    return ChunkGrounding(reference=furniture[-1], direction="back") if furniture else g
 
 
 def _turned_side(words: list[str]) -> str | None:

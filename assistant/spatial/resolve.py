@@ -29,7 +29,7 @@ how far along the room's extent, :func:`room_side_fit`), a wall ("against the le
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -178,13 +178,16 @@ def wall_fit(target: Entity, viewer: Pose2D, direction: str | None, floorplan) -
 # ----------------------------------------------------------------------------- one pair
 
 def relation_fit(rdt: RDT, reference: Entity | None, target: Entity, viewer: Pose2D,
-                 floorplan=None, perceived: Sequence[Entity] = ()) -> float:
+                 floorplan=None, perceived: Sequence[Entity] = (), *,
+                 items: Mapping[str, Entity] | None = None) -> float:
     """In (0, 1]: how well ``target`` stands in ``rdt``'s relation to ``reference``, as said by
     a person at ``viewer`` (the robot's pose when the command was given).
 
     ``reference`` is None for the robot (``robot``/``move``), the room and a wall; a furniture
     RDT without its reference entity is read from the viewer. ``floorplan`` is needed for the
-    room and wall references; ``perceived`` (the other furniture) for ``between``.
+    room and wall references; ``perceived`` (the other furniture) for ``between``. References
+    are read as the items they are (:func:`~assistant.world.entity.as_item`); ``items`` (id →
+    entity) holds those already read so (:func:`resolve` reads each reference once).
     """
     kind = rdt.reference_kind
     if kind == "room" and rdt.direction in DIRECTION_ANGLES and floorplan is not None:
@@ -193,13 +196,13 @@ def relation_fit(rdt: RDT, reference: Entity | None, target: Entity, viewer: Pos
         return view_fit(target, viewer)
     if kind == "wall" and floorplan is not None:
         return FLOOR + wall_fit(target, viewer, rdt.direction, floorplan)
-    origin = as_item(reference) if reference is not None else Entity.robot(viewer, target.grid)
+    origin = _item(reference, items) if reference is not None else Entity.robot(viewer, target.grid)
     dist = dist_srv(origin, target)
     seen = _seen(target, viewer)
     if rdt.direction in ("beside", "between") and reference is not None:
         fit = (0.3 + 0.7 * seen) * max(closeness(dist), FLOOR)
         if rdt.direction == "between":  # a second item of the reference's kind close by
-            others = [closeness(dist_srv(as_item(r), target)) for r in perceived
+            others = [closeness(dist_srv(_item(r, items), target)) for r in perceived
                       if r.name == reference.name and r.id not in (reference.id, target.id)]
             fit *= 0.5 + 0.5 * max(others, default=0.0)
         return fit
@@ -208,6 +211,12 @@ def relation_fit(rdt: RDT, reference: Entity | None, target: Entity, viewer: Pos
         return near
     agree = direction_weight(origin, target, rdt.direction, viewer.theta)
     return (FLOOR + agree) * near * (0.7 + 0.3 * seen)
+
+
+def _item(entity: Entity, items: Mapping[str, Entity] | None) -> Entity:
+    """``entity`` as the item it is: from ``items`` when read already, else :func:`as_item`."""
+    found = items.get(entity.id) if items is not None else None
+    return found if found is not None else as_item(entity)
 
 
 # ----------------------------------------------------------------------------- ranking
@@ -234,13 +243,16 @@ def resolve(rdt: RDT, perceived: Sequence[Entity], viewer_pose: Pose2D, *, floor
             return []
     else:
         refs = [None]
-    agreement = _agreement(also, perceived, targets, viewer_pose, floorplan)
+    # every entity that is some relation's reference, read as the item it is once
+    names = {rdt.reference} | {r.reference for r in also}
+    items = {e.id: as_item(e) for e in perceived if e.name in names}
+    agreement = _agreement(also, perceived, targets, viewer_pose, floorplan, items)
     out = []
     for ref in refs:
         for tar in targets:
             if ref is not None and tar.id == ref.id:
                 continue
-            fit = relation_fit(rdt, ref, tar, viewer_pose, floorplan, perceived)
+            fit = relation_fit(rdt, ref, tar, viewer_pose, floorplan, perceived, items=items)
             fit *= agreement.get(tar.id, 1.0) * (prior(tar) if prior is not None else 1.0)
             out.append(Resolution(ref, tar, fit))
     out.sort(key=lambda r: -r.fit)
@@ -248,7 +260,7 @@ def resolve(rdt: RDT, perceived: Sequence[Entity], viewer_pose: Pose2D, *, floor
 
 
 def _agreement(also: Sequence[RDT], perceived: Sequence[Entity], targets: list[Entity],
-               viewer: Pose2D, floorplan) -> dict[str, float]:
+               viewer: Pose2D, floorplan, items: Mapping[str, Entity]) -> dict[str, float]:
     """Per target id, a factor in [0.3, 1] for how well it also fits each of ``also``
     (relative to the best target); a relation whose reference is not perceived counts for
     nothing."""
@@ -260,7 +272,7 @@ def _agreement(also: Sequence[RDT], perceived: Sequence[Entity], targets: list[E
                 continue
         else:
             refs = [None]
-        fits = {t.id: max((relation_fit(rdt, r, t, viewer, floorplan, perceived)
+        fits = {t.id: max((relation_fit(rdt, r, t, viewer, floorplan, perceived, items=items)
                            for r in refs if r is None or r.id != t.id), default=0.0)
                 for t in targets}
         top = max(fits.values(), default=0.0)

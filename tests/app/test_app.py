@@ -108,3 +108,31 @@ def test_where_is_from_a_remembered_place(apartment):
     result = finder.where_is("mug", apartment, remembered=remembered)
     assert result.success and result.message.lower().startswith("the mug")
     assert result.to_dict()["seen_at"]["x"] == pytest.approx(coffee.x)
+
+
+def test_what_a_person_asks_for_is_the_name_looked_for():
+    from assistant.app import asked_object
+
+    assert asked_object("my keys") == "keys" and asked_object("key") == "keys"
+    assert asked_object("my phone") == "cell phone" and asked_object("The Wallet") == "wallet"
+    assert asked_object("my umbrellas") == "umbrella" and asked_object("glasses case") == "glasses case"
+
+
+def test_where_is_my_wallet_in_a_lived_in_home(apartment):
+    """The everyday things of a lived-in scene are found by what people call them; one the home
+    does not hold gets the honest answer."""
+    finder = Finder()
+    wallet = finder.where_is("my wallet", apartment, "lived-in", search="oracle")
+    assert wallet.success and wallet.message.lower().startswith("the wallet") and "living room" in wallet.message
+    phone = finder.where_is("phone", apartment, "lived-in", search="oracle")
+    assert phone.success and "cell phone" in phone.message
+    # the original scene has no wallet: not found, said so
+    missing = finder.where_is("my wallet", apartment, "original", search="oracle")
+    assert missing.status is Status.NOT_FOUND and "wallet" in missing.message
+
+
+def test_the_robot_searches_a_lived_in_home_for_my_keys(apartment):
+    result = Finder().where_is("my keys", apartment, "lived-in")
+    assert result.success and result.data["found"], result.message
+    assert result.object == "keys" and "living room" in result.message
+    assert result.description.environment == "perceived"

@@ -128,3 +128,14 @@ def test_the_chat_says_it_is_getting_ready_before_its_greeting(tmp_path):
     child.expect_exact(PROMPT)
     child.sendeof()
     child.expect(pexpect.EOF)
+
+
+def test_bye_ends_the_chat(tmp_path):
+    child = spawn(tmp_path)
+    child.expect_exact(PROMPT)
+    child.sendline("ok bye")
+    child.expect("Goodbye")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert [t["intent"] for t in transcript(tmp_path)["turns"]] == ["bye"]

@@ -15,7 +15,8 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("where is my mug?", "where"), ("Where's the laptop", "where"), ("have you seen my fork", "where"),
     ("where did I leave the glasses case", "where"),
     ("yes", "yes"), ("no thanks", "no"), ("hello", "greet"), ("thanks!", "thanks"),
-    ("you stupid robot", "rude"),
+    ("you stupid robot", "rude"), ("bye", "bye"), ("OK, goodbye!", "bye"), ("that's all for now", "bye"),
+    ("quit", "bye"),
     ("bring me the mug from the table in front of the couch", "command"),
     ("", "empty"), ("   ", "empty"),
 ])

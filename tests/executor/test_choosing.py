@@ -92,3 +92,40 @@ def test_other_furniture_on_the_line_of_sight_hides_the_target(all_worlds):
     assert in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2)), furniture, 1.8)
     # facing away from it, it is not in view either
     assert not in_view(table, Pose2D(2.8, 1.6, math.atan2(0.4, 1.2) + math.pi), furniture, 1.8)
+
+
+def _seen(world, perception, *sightings):
+    from assistant.executor.sightings import place_sightings
+
+    return {s.name: s for s in place_sightings(world, perception.furniture(), list(sightings))}
+
+
+def test_an_object_seen_is_a_landmark(apartment):
+    """"the table next to the keys": the keys the object detector saw single out their table among
+    the living room's three; an object not seen is no reference (the node's other pairs decide)."""
+    from assistant.perception.objects import Sighting
+
+    perception = OracleFurniture(apartment, "lived-in")
+    door = Pose2D(4.5, 1.8, math.pi / 2)
+    for name, x, y, table in (("keys", 4.13, 2.05, "roundtable_1"), ("wallet", 4.7, 4.08, "coffeetable_1"),
+                              ("cell phone", 4.72, 7.09, "dinnertable_1")):
+        chooser = PlaceChooser(apartment, perception, _seen(apartment, perception, Sighting(name, x, y, 0.75)))
+        ref, target, fit = chooser.choose_pair(RDT(name, "beside", "table"), "living room", door)
+        assert ref.id == f"object:{name}" and ref.name == name and target.id == table and fit > 0.3
+        assert chooser.in_room("living room", name) and not chooser.in_room("bedroom", name)
+        # a landmark is never a surface to search
+        assert all(not e.id.startswith("object:") for e in chooser.likely_surfaces("living room", "table", door))
+    blind = PlaceChooser(apartment, perception)
+    assert blind.choose_pair(RDT("keys", "beside", "table"), "living room", door) is None
+
+
+def test_an_object_landmark_and_a_furniture_pair_agree(apartment):
+    # "the table by the wallet in front of the couch": both relations read the coffee table
+    from assistant.perception.objects import Sighting
+
+    perception = OracleFurniture(apartment, "lived-in")
+    chooser = PlaceChooser(apartment, perception, _seen(apartment, perception, Sighting("wallet", 4.7, 4.08, 0.75)))
+    door = Pose2D(4.5, 1.8, math.pi / 2)
+    _, target, _ = chooser.choose_pair(RDT("wallet", "beside", "table"), "living room", door,
+                                       [RDT("couch", "front", "table")])
+    assert target.id == "coffeetable_1"

@@ -251,3 +251,20 @@ def test_an_item_perception_is_unsure_of_is_looked_at_again_before_the_robot_act
     assert result.success and result.target_furniture["id"] == "coffeetable_1"
     _, sure_events = _run_with(apartment, plan, policies, OracleFurniture(apartment, "original"))
     assert "look_again" not in [name for name, _ in sure_events]
+
+
+def test_an_object_the_detector_sees_is_the_landmark_of_the_node(apartment, policies):
+    """"the fork is on the table next to the keys" in the lived-in living room: the object detector
+    sees the keys and the node reads its table from them (not the likely-surface search)."""
+    from assistant.perception.objects import SimObjectDetector
+
+    detector = SimObjectDetector.for_scene(apartment.scene("lived-in"))
+    plan = _plan("living room", [RDTNode("table", (("keys", "beside"),))], "fork")
+    result, _ = _run(apartment, plan, policies, scene="lived-in", object_detector=detector)
+    assert result.success and not result.recovered, result.to_dict()
+    node = result.nodes[0]
+    assert node.status == "success" and node.reference == "object:keys" and node.target == "roundtable_1"
+    assert result.target_furniture["id"] == "roundtable_1"
+    # without an object detector the keys are never seen: the node finds no reference
+    blind, _ = _run(apartment, plan, policies, scene="lived-in")
+    assert blind.nodes[0].reference is None and blind.nodes[0].status == "reference_not_found"

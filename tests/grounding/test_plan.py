@@ -128,3 +128,18 @@ def test_rdt_string_form_round_trips():
         RDT.parse("couch-front")
     node = RDTNode("table", (("robot", "right"), ("couch", "back")))
     assert node.to_dict()["alternatives"] == ["robot-right-table", "couch-back-table"]
+
+
+def test_a_reference_said_right_after_the_target_is_a_pair_of_its_node():
+    # "the fork is [on the little table] [next to the keys]": one node, the table's, with the pair
+    tree = ChunkTree([chunk("OBTP", "the/DT fork/NN is/VBZ", chunk("FURTP", "on/ON the/DT little/JJ table/FUR"),
+                            chunk("OBRP", "next/JJ to/TO the/DT keys/NNS"))])
+    plan = assemble_plan(tree, [G(object="fork"), G(target="table"), G(reference="keys", direction="beside")])
+    assert [n.pairs for n in plan.nodes] == [(("keys", "beside"),)]
+    assert not plan.nodes[0].implied_target and plan.nodes[0].descriptors == ("small",)
+    assert not any(f.startswith(("implied_target", "unreferenced_target")) for f in plan.flags)
+    # with a chunk between them the reference is a node of its own, its table implied
+    tree = ChunkTree([chunk("FURTP", "go/VB to/TO the/DT table/FUR"), chunk("OBTP", "the/DT fork/NN is/VBZ"),
+                      chunk("OBRP", "next/JJ to/TO the/DT keys/NNS")])
+    plan = assemble_plan(tree, [G(target="table"), G(object="fork"), G(reference="keys", direction="beside")])
+    assert len(plan.nodes) == 2 and plan.nodes[1].implied_target

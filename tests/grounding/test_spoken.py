@@ -102,6 +102,12 @@ def test_motion_families():
     assert far == ChunkGrounding(reference="room", direction="back")
     assert ground("FURRP", "NN pass DT the FUR couch", ChunkGrounding(reference="couch", direction="beside")) == \
         ChunkGrounding(reference="couch", direction="back")
+    # "pass the sofa" chunked as a room phrase that names no room: still passing it
+    assert ground("ORMTP", "VB pass DT the FUR sofa", ChunkGrounding()) == \
+        ChunkGrounding(reference="couch", direction="back")
+    # a room named on the way stays the room ("go past the big table into the living room")
+    into = ChunkGrounding(room="living room")
+    assert ground("ORMTP", "VB go JJ past DT the FUR table IN into DT the NN living RM room", into) == into
 
 
 def test_right_next_to_is_beside():
