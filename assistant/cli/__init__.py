@@ -63,6 +63,15 @@ def json_output(args: argparse.Namespace) -> bool:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The program (``argv`` None: the command line of this process) → its exit status."""
+    code = _run(argv)
+    tts = sys.modules.get("assistant.dialogue.speech.tts")
+    if argv is None and tts is not None:  # the process itself, not a caller in Python
+        tts.leave_if_synthesis_hung(code)
+    return code
+
+
+def _run(argv: list[str] | None) -> int:
     limit_openmp_threads()
     from assistant.cli.common import join_negative_values
 

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from assistant.dialogue.speech.audio import SAMPLE_RATE_HZ, audio_from_bytes, read_audio, write_wav
+from assistant.dialogue.speech.audio import SAMPLE_RATE_HZ, audio_from_bytes, read_audio, speech_power, write_wav
 from assistant.dialogue.speech.vocabulary import normalise_transcript
 
 #: espeak-ng voices (US English, as the acoustic model: docs/speech.md for British voices)
@@ -158,11 +158,7 @@ def household_noise(n: int, seed: int) -> np.ndarray:
 
 def mix_at_snr(speech: np.ndarray, noise: np.ndarray, snr_db: float) -> np.ndarray:
     """``speech`` + ``noise`` scaled so the speech's active power is ``snr_db`` above it."""
-    frame = int(0.03 * SAMPLE_RATE_HZ)
-    frames = speech[:len(speech) // frame * frame].reshape(-1, frame)
-    energy = np.mean(frames ** 2, axis=1)
-    active = energy > 0.003 * float(energy.max())  # within 25 dB of the loudest frame: speech
-    power = float(energy[active].mean()) if active.any() else float(np.mean(speech ** 2))
+    power = speech_power(speech)
     scale = np.sqrt(power / (10 ** (snr_db / 10.0)))
     out = speech + scale * noise[:len(speech)]
     peak = float(np.max(np.abs(out)))

@@ -50,6 +50,38 @@ def from_pcm16(data: bytes) -> np.ndarray:
     return np.frombuffer(data, dtype="<i2").astype(np.float32) / 32768.0
 
 
+def frame_energies(samples: np.ndarray) -> np.ndarray:
+    """Mean power of each 30 ms frame (a shorter tail is a frame of its own)."""
+    frame = int(0.03 * SAMPLE_RATE_HZ)
+    samples = np.asarray(samples, dtype=np.float64)
+    return np.array([np.mean(samples[i:i + frame] ** 2) for i in range(0, len(samples), frame)])
+
+
+def active_power(energies) -> float:
+    """Mean of the frame energies within 25 dB of the loudest: the power of the speech."""
+    energies = np.asarray(energies, dtype=np.float64)
+    if not energies.size:
+        return 0.0
+    active = energies > 0.003 * float(energies.max())
+    return float(energies[active].mean()) if active.any() else float(energies.mean())
+
+
+def speech_power(samples: np.ndarray) -> float:
+    """Mean power of the spoken part of ``samples`` (see :func:`active_power`)."""
+    return active_power(frame_energies(samples))
+
+
+def with_noise_floor(samples: np.ndarray, below_db: float, seed: int = 0, power: float | None = None) -> np.ndarray:
+    """``samples`` with white noise ``below_db`` under the speech's power (``power``: that power,
+    when known; default :func:`speech_power`). Fixed seed: the same input gives the same output."""
+    samples = np.asarray(samples, dtype=np.float32)
+    power = speech_power(samples) if power is None else power
+    if power <= 0 or not len(samples):
+        return samples
+    level = np.sqrt(power / 10 ** (below_db / 10.0))
+    return samples + np.random.default_rng(seed).normal(0.0, level, len(samples)).astype(np.float32)
+
+
 def resample(samples: np.ndarray, rate_hz: int, target_hz: int = SAMPLE_RATE_HZ) -> np.ndarray:
     """Polyphase resampling from ``rate_hz`` to ``target_hz`` (exact for integer rates)."""
     if rate_hz == target_hz:

@@ -19,6 +19,7 @@ import logging
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import threading
 from pathlib import Path
@@ -34,6 +35,28 @@ log = logging.getLogger(__name__)
 GAP_S = 0.4
 #: longest a synthesis may take before it counts as hung (seconds)
 SYNTH_TIMEOUT_S = 20.0
+#: synthesis threads that did not finish in time (maybe still inside espeak's C code)
+_HUNG: list[threading.Thread] = []
+
+
+def synthesis_hung() -> bool:
+    """Whether a timed-out synthesis thread is still running."""
+    return any(thread.is_alive() for thread in _HUNG)
+
+
+def leave_if_synthesis_hung(code: int) -> None:
+    """End the process now, with ``code``, when a timed-out synthesis thread is still running.
+
+    Python's normal exit would tear the interpreter down under that thread while it is inside
+    espeak's C code, which aborts the program ("terminate called without an active exception",
+    exit status 134) instead of exiting with ``code``. Output is flushed first; nothing of the
+    program's own is left to do when this is called (the command has returned)."""
+    if not synthesis_hung():
+        return
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(code)
 
 
 class Speaker:
@@ -52,6 +75,7 @@ class Speaker:
         self._lock = threading.Lock()
         self._stop = threading.Event()
         self._engine = None
+        self._pyttsx3_hung = False  # a synthesis timed out: its engine is busy for good
         self.fallbacks = 0
         self.speaking = False  # sound is playing (barge-in listens then)
         self._check_voice()
@@ -91,6 +115,9 @@ class Speaker:
         if not text:
             return np.zeros(0, dtype=np.float32)
         with self._lock:
+            if self._pyttsx3_hung:
+                self.fallbacks += 1
+                return self._with_espeak(text)
             try:
                 return self._with_pyttsx3(text)
             except Exception as error:  # pyttsx3's driver problems: fall back to the program
@@ -117,6 +144,10 @@ class Speaker:
             worker.start()
             worker.join(SYNTH_TIMEOUT_S)
             if worker.is_alive():
+                # the thread cannot be stopped; pyttsx3 is not used again (its engine, shared by
+                # every init, is stuck in that thread) and the program's exit steps round it
+                _HUNG.append(worker)
+                self._pyttsx3_hung = True
                 raise TimeoutError(f"pyttsx3 did not finish within {SYNTH_TIMEOUT_S:.0f} s")
             if errors:
                 raise errors[0]

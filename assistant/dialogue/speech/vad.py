@@ -56,9 +56,6 @@ class UtteranceDetector:
         self._history: deque = deque(maxlen=self._pad_frames + int(window_s / self._ep.frame_length) + 4)
         self._index = 0
         self._speech: list[np.ndarray] = []
-        self._trail = 0
-        self._trail_frames = self._pad_frames
-        self._closing: Utterance | None = None
         self._start_s = 0.0
         self._end_s = 0.0
         self.on_samples = on_samples
@@ -89,8 +86,6 @@ class UtteranceDetector:
                 self._speech.append(from_pcm16(rest))
             self._end_s = self._ep.speech_end
             done.extend(self._close())
-        elif self._closing is not None:
-            done.extend(self._finish_closing())
         self._pending = np.zeros(0, dtype=np.float32)
         return done
 
@@ -98,13 +93,9 @@ class UtteranceDetector:
     def _frame(self, frame: np.ndarray) -> list[Utterance]:
         was = self._ep.in_speech
         speech = self._ep.process(to_pcm16(frame))
+        self._history.append((self._index, frame))
+        self._index += 1
         out: list[Utterance] = []
-        if self._closing is not None:  # collecting the trailing pad of the last utterance
-            self._speech.append(frame)
-            self._tell(frame, False)
-            self._trail -= 1
-            if self._trail <= 0:
-                out.extend(self._finish_closing())
         if speech is not None:
             if not was:  # speech began: keep the pad of audio before it
                 self._start_s = self._ep.speech_start
@@ -117,8 +108,6 @@ class UtteranceDetector:
         if was and not self._ep.in_speech:  # the last speech frame comes with in_speech off
             self._end_s = self._ep.speech_end
             out.extend(self._close())
-        self._history.append((self._index, frame))
-        self._index += 1
         return out
 
     def _tell(self, samples: np.ndarray, starting: bool) -> None:
@@ -126,20 +115,19 @@ class UtteranceDetector:
             self.on_samples(samples, starting)
 
     def _close(self) -> list[Utterance]:
+        """The utterance, with the pad after it taken from the audio already heard (the
+        endpointer decides ``window_s`` after the speech's end: no further wait)."""
+        speech, self._speech = self._speech, []
         if self._end_s - self._start_s < self.min_speech_s:
-            self._speech = []
             return []
-        self._closing = Utterance(np.zeros(0, dtype=np.float32), self._start_s, self._end_s)
-        self._trail = self._trail_frames
-        if self._trail <= 0:
-            return self._finish_closing()
-        return []
-
-    def _finish_closing(self) -> list[Utterance]:
-        closing, self._closing = self._closing, None
-        samples = np.concatenate(self._speech) if self._speech else np.zeros(0, dtype=np.float32)
-        self._speech = []
-        return [Utterance(samples, closing.start_s, closing.end_s)]
+        last = int(round(self._end_s / self._ep.frame_length))
+        trail = [f for i, f in self._history if last <= i < last + self._pad_frames]
+        if trail:
+            pad = np.concatenate(trail)
+            speech.append(pad)
+            self._tell(pad, False)
+        samples = np.concatenate(speech) if speech else np.zeros(0, dtype=np.float32)
+        return [Utterance(samples, self._start_s, self._end_s)]
 
 
 def speech_spans(samples: np.ndarray, **options) -> list[Utterance]:

@@ -51,3 +51,23 @@ def test_endpointer_finds_each_utterance_with_padding():
     first = spans[0]
     assert abs(len(first.samples) / SAMPLE_RATE_HZ - (first.seconds + 0.6)) < 0.1  # 0.3 s before and after
     assert speech_spans(np.zeros(3 * SAMPLE_RATE_HZ, dtype=np.float32)) == []
+
+
+def test_an_utterance_is_handed_back_as_soon_as_the_endpointer_hears_the_pause():
+    from assistant.dialogue.speech.vad import UtteranceDetector
+
+    x = speak("where is my mug", pad_s=1.0)
+    x = x + np.random.default_rng(1).normal(0, 1e-3, len(x)).astype(np.float32)
+    fed: list[np.ndarray] = []
+    detector = UtteranceDetector(window_s=0.3, pad_s=0.3, on_samples=lambda s, starting: fed.append(s))
+    for i in range(0, len(x), 480):  # 30 ms blocks, as the microphone delivers them
+        done = detector.feed(x[i:i + 480])
+        if done:
+            heard_at_s = (i + 480) / SAMPLE_RATE_HZ
+            break
+    else:
+        raise AssertionError("the utterance never ended")
+    # the pad after the words comes from audio already heard: no wait beyond the endpointer's window
+    assert heard_at_s - done[0].end_s <= 0.3 + 0.05
+    assert len(done[0].samples) / SAMPLE_RATE_HZ > done[0].seconds + 0.45  # both pads kept
+    assert sum(len(s) for s in fed) == len(done[0].samples)  # the stream got every sample
