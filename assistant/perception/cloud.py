@@ -228,7 +228,8 @@ def _support_scores(points: np.ndarray, normals: np.ndarray, d: np.ndarray,
     The (M, N) heights are built a few dozen planes at a time from the three coordinate rows
     (no BLAS matrix product: its threads competed on the loaded machine, and a chunk stays in
     the cache), in two buffers and one mask allocated once per call (a fresh megabyte array
-    per step cost more than the arithmetic); the counts are exact integers.
+    per step cost more than the arithmetic), rows counted one by one (:func:`_row_counts`);
+    the counts are exact integers.
     """
     rows = np.ascontiguousarray(points.T)
     score = np.empty(len(normals), dtype=np.int64)
@@ -241,9 +242,16 @@ def _support_scores(points: np.ndarray, normals: np.ndarray, d: np.ndarray,
         h += np.multiply.outer(n[:, 1], rows[1], out=t)
         h += np.multiply.outer(n[:, 2], rows[2], out=t)
         h += d[a:a + chunk, None]
-        below = np.count_nonzero(np.less(h, -0.12, out=m), axis=1)
-        score[a:a + len(n)] = np.count_nonzero(np.less(np.abs(h, out=t), 0.05, out=m), axis=1) - 2 * below
+        below = _row_counts(np.less(h, -0.12, out=m))
+        score[a:a + len(n)] = _row_counts(np.less(np.abs(h, out=t), 0.05, out=m)) - 2 * below
     return score
+
+
+def _row_counts(mask: np.ndarray) -> np.ndarray:
+    """``np.count_nonzero(mask, axis=1)`` of a 2-D bool array, row by row: a contiguous row is
+    counted by numpy's fast 1-D path, ~3× faster than the axis reduction for a few dozen rows
+    of thousands."""
+    return np.array([np.count_nonzero(row) for row in mask], dtype=np.int64)
 
 
 def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: float = 0.1,
