@@ -22,6 +22,10 @@ today's classifier, so its shape descriptor gets today's side cues appended.
     .venv/bin/python benchmarks/bench_perception.py [--repeats 5] [--views 2]
         [--realdata PATH] [--no-reference] [--threads]
 
+``--front-half COMMIT`` instead times the real frames' front half alone (``analyse_frame``, the
+floor searched for) against ``COMMIT``'s, CPU, interleaved frame by frame, and checks that
+both give the same samples and features.
+
 ``--threads`` instead times the current code with numpy's BLAS and open3d's OpenMP pools
 set to 1 or 2 threads (``threadpoolctl``), interleaved frame by frame: "BLAS 1, OpenMP 1" is
 ``OMP_NUM_THREADS=1`` set before numpy loads, "BLAS 2, OpenMP 1" what the product got when
@@ -240,6 +244,42 @@ def threads_comparison(detector, frames: list, use_mount: bool, repeats: int) ->
               f"CPU median {median(cpu[name]):6.1f} ms")
 
 
+def front_half_comparison(frames: list, repeats: int, commit: str) -> None:
+    """CPU milliseconds of the front half alone (``analyse_frame``, floor searched for) of the
+    current code and of ``commit``'s (``perception_reference.load``), interleaved frame by
+    frame so both see the same load; medians and p90 per frame size and the median per-frame
+    ratio. The two must find the same floor and samples: the output says if they do not."""
+    import numpy as np
+
+    from assistant.perception.frame import analyse_frame
+
+    ref = load_reference(commit)
+    cpu = {"current": {}, commit: {}}
+    ratios, differ = [], set()
+    for rep in range(repeats):
+        for i, (label, frame) in enumerate(frames):
+            size = f"{frame.intrinsics.width}×{frame.intrinsics.height}"
+            runs = {}
+            for which in (("current", commit) if (rep + i) % 2 == 0 else (commit, "current")):
+                fn = analyse_frame if which == "current" else ref.frame.analyse_frame
+                c = time.process_time()
+                runs[which] = fn(frame, use_mount=False)
+                cpu[which].setdefault(size, []).append((time.process_time() - c) * 1e3)
+            ratios.append(cpu[commit][size][-1] / max(cpu["current"][size][-1], 1e-6))
+            a, b = runs["current"], runs[commit]
+            if not (np.array_equal(a.features, b.features) and len(a.samples) == len(b.samples)
+                    and all(np.array_equal(p.points, q.points) for p, q in zip(a.samples, b.samples))):
+                differ.add(label)
+    for which, by_size in cpu.items():
+        every = [v for values in by_size.values() for v in values]
+        sizes = ", ".join(f"{s} {median(v):.1f} / {p90(v):.1f}" for s, v in sorted(by_size.items()))
+        print(f"  {which:9s} front half CPU median {median(every):6.1f} ms  p90 {p90(every):6.1f} ms"
+              f"   ({sizes})")
+    print(f"  {commit}/current: median per-frame CPU ratio {median(ratios):.3f}×; same samples and "
+          f"features on {len(frames) - len(differ)}/{len(frames)} frames"
+          + (f" (differ: {', '.join(sorted(differ))})" if differ else ""))
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="runs of every frame (default 5)")
@@ -254,10 +294,18 @@ def main() -> int:
                              "half, no cues, verifier or regrouping, scikit-learn's SVM decision), not the "
                              "code before the speed work")
     parser.add_argument("--real-only", action="store_true", help="time the real frames only")
+    parser.add_argument("--front-half", metavar="COMMIT",
+                        help="instead: the real frames' front half (analyse_frame) against COMMIT's, CPU, "
+                             "interleaved")
     args = parser.parse_args()
     commit = FILED_COMMIT if args.as_filed else None
     from assistant.perception import FurnitureDetector
 
+    if args.front_half:
+        real = real_frames(args.realdata)
+        print(f"real frames ({args.realdata}), front half only, floor searched for, {args.repeats} runs each:")
+        front_half_comparison(real, args.repeats, args.front_half)
+        return 0
     load_before = os.getloadavg()
     sim = [] if args.real_only else simulated_frames(args.views)
     real = real_frames(args.realdata) if args.realdata.is_dir() else []

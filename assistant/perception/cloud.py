@@ -66,10 +66,9 @@ class Floor:
 def sanitize_depth(depth_m: np.ndarray, max_range_m: float = 8.0) -> np.ndarray:
     """float32 depth with every non-finite, negative or too far reading set to 0 (missing)."""
     d = np.asarray(depth_m, dtype=np.float32)
-    bad = ~np.isfinite(d) | (d <= 0) | (d > max_range_m)
-    if bad.any():
-        d = np.where(bad, np.float32(0.0), d)
-    return d
+    good = d > 0  # False for NaN; inf fails the range test
+    good &= d <= max_range_m
+    return np.where(good, d, np.float32(0.0))
 
 
 def depth_to_points(depth_m: np.ndarray, intrinsics: CameraIntrinsics, stride: int = 2,
@@ -134,7 +133,8 @@ def _fit_plane(points: np.ndarray, seed: int, max_points: int = RANSAC_MAX_POINT
 
     if len(points) < 3:
         return None
-    sub = points[:: max(1, len(points) // max_points)]
+    # a contiguous copy: open3d converts a strided array ~50× slower (1.2 ms for 2000 points)
+    sub = np.ascontiguousarray(points[:: max(1, len(points) // max_points)])
     o3d.utility.random.seed(seed)
     cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(sub))
     model, _ = cloud.segment_plane(RANSAC_DISTANCE_M, 3, RANSAC_ITERATIONS)
@@ -222,24 +222,36 @@ def _search_floor(points: np.ndarray, seed: int = 0, hypotheses: int = 400,
 
 
 def _support_scores(points: np.ndarray, normals: np.ndarray, d: np.ndarray,
-                    chunk: int = 48) -> np.ndarray:
+                    chunk: int = 32) -> np.ndarray:
     """Per plane (M): points within 5 cm minus twice the points more than 12 cm below it.
 
     The (M, N) heights are built a few dozen planes at a time from the three coordinate rows
     (no BLAS matrix product: its threads competed on the loaded machine, and a chunk stays in
-    the cache); the counts are exact integers.
+    the cache), in two buffers and one mask allocated once per call (a fresh megabyte array
+    per step cost more than the arithmetic), rows counted one by one (:func:`_row_counts`);
+    the counts are exact integers.
     """
     rows = np.ascontiguousarray(points.T)
     score = np.empty(len(normals), dtype=np.int64)
+    shape = (min(chunk, len(normals)), rows.shape[1])
+    heights, scratch, mask = np.empty(shape), np.empty(shape), np.empty(shape, dtype=bool)
     for a in range(0, len(normals), chunk):
         n = normals[a:a + chunk]
-        h = np.multiply.outer(n[:, 0], rows[0])
-        h += np.multiply.outer(n[:, 1], rows[1])
-        h += np.multiply.outer(n[:, 2], rows[2])
+        h, t, m = heights[:len(n)], scratch[:len(n)], mask[:len(n)]
+        np.multiply.outer(n[:, 0], rows[0], out=h)
+        h += np.multiply.outer(n[:, 1], rows[1], out=t)
+        h += np.multiply.outer(n[:, 2], rows[2], out=t)
         h += d[a:a + chunk, None]
-        score[a:a + chunk] = (np.count_nonzero(np.abs(h) < 0.05, axis=1)
-                              - 2 * np.count_nonzero(h < -0.12, axis=1))
+        below = _row_counts(np.less(h, -0.12, out=m))
+        score[a:a + len(n)] = _row_counts(np.less(np.abs(h, out=t), 0.05, out=m)) - 2 * below
     return score
+
+
+def _row_counts(mask: np.ndarray) -> np.ndarray:
+    """``np.count_nonzero(mask, axis=1)`` of a 2-D bool array, row by row: a contiguous row is
+    counted by numpy's fast 1-D path, ~3× faster than the axis reduction for a few dozen rows
+    of thousands."""
+    return np.array([np.count_nonzero(row) for row in mask], dtype=np.int64)
 
 
 def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: float = 0.1,

@@ -141,7 +141,7 @@ def _analyse(frame: DepthFrame, params: FrameParams, use_mount: bool,
     cols = frame.intrinsics.fx * pts[keep, 0] / pts[keep, 2] + frame.intrinsics.cx
     samples, stats = extract_samples(pf, rows[keep], frame.intrinsics.height, cols,
                                      frame.intrinsics.width, params.samples,
-                                     camera_xy=floor.camera_to_floor[:2, 3])
+                                     camera_xy=floor.camera_to_floor[:2, 3], in_region=True)
     stats["points"] = int(len(pts))
     t3, c3 = time.perf_counter(), time.process_time()
     camera_xyz = floor.camera_to_floor[:3, 3].copy()

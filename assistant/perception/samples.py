@@ -110,8 +110,11 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
                     image_height: int | None = None, cols: np.ndarray | None = None,
                     image_width: int | None = None,
                     params: SampleParams = SampleParams(),
-                    camera_xy=None) -> tuple[list[FurnitureSample], dict]:
+                    camera_xy=None, *, in_region: bool = False) -> tuple[list[FurnitureSample], dict]:
     """Split a floor-frame cloud into furniture samples.
+
+    ``in_region``: the caller kept only the points of :func:`sample_region` (the frame does),
+    so the test is not made again.
 
     ``rows``/``cols`` give each point's image row/column (or None) to clear columns that run
     out of the top of the view and to flag samples cut by the image sides; with them and
@@ -126,9 +129,10 @@ def extract_samples(points_floor: np.ndarray, rows: np.ndarray | None = None,
              "dropped_wall": 0, "cleared_cells": 0}
     if len(points_floor) == 0:
         return [], stats
-    inside = sample_region(points_floor[:, 0], points_floor[:, 1], points_floor[:, 2], p)
     pts, r, c = points_floor, rows, cols
-    if not inside.all():  # (all inside when the caller kept only these points)
+    inside = None if in_region else sample_region(points_floor[:, 0], points_floor[:, 1],
+                                                  points_floor[:, 2], p)
+    if inside is not None and not inside.all():
         pts = np.compress(inside, points_floor, axis=0)  # = points_floor[inside], faster
         r = np.compress(inside, rows) if rows is not None else None
         c = np.compress(inside, cols) if cols is not None else None
