@@ -37,8 +37,11 @@ def test_conversation_ctrl_c_stops_then_leaves(tmp_path):
     child.expect_exact(PROMPT)
     child.sendline("where is my mug")  # never seen: the robot searches the home
     child.expect("I'll go and look for it")
-    child.expect("Looking in the")
     child.expect("Found it: the mug is in the bedroom")
+    searching = child.before
+    assert "Looking in the" in searching  # the robot's sentences
+    # and between them a status line above the prompt, ticking while it works (a terminal only)
+    assert "— \"stop\" stops me)" in searching and "(looking around the " in searching
     child.expect_exact(PROMPT)
     # Ctrl-C the instant the robot has set off, several times in a row, with no pause: the
     # watcher thread handles each SIGINT as it arrives, whatever the main thread is doing
