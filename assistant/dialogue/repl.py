@@ -54,6 +54,7 @@ class ChatSession:
         self._interrupt_lock = threading.Lock()
         self._reading = False
         self._reading_since = 0.0
+        self._leaving_wait = False  # Ctrl-D came while the robot works: waiting for it to finish
         self._leaving = False
         self.interactive = self.stdin.isatty()
         self.records: list[dict] = []
@@ -73,6 +74,8 @@ class ChatSession:
             if redraw and self.interactive and self._reading:
                 erase = self.status.erase() if self.status is not None else "\r\033[K"
                 self.out.write(erase + text + "\n" + PROMPT + _typed())
+            elif self.status is not None and self.status.drawn:  # waiting to leave: no prompt below
+                self.out.write(self.status.erase() + text + "\n")
             else:
                 self.out.write(text + "\n")
             self.out.flush()
@@ -257,8 +260,9 @@ class ChatSession:
                                      self._at_prompt, _typed).start()
 
     def _at_prompt(self) -> bool:
-        """The prompt is on screen, waiting (``input`` draws it just after ``_reading`` is set)."""
-        return self._reading and time.monotonic() - self._reading_since > 0.2
+        """The prompt is on screen, waiting (``input`` draws it just after ``_reading`` is set),
+        or the chat waits for the robot before it leaves (the status line then has no prompt)."""
+        return self._leaving_wait or (self._reading and time.monotonic() - self._reading_since > 0.2)
 
     def _on_interrupt(self) -> bool:
         """Ctrl-C (called by the watcher thread the moment it arrives): the first stops the
@@ -278,9 +282,15 @@ class ChatSession:
         return False
 
     def _end_of_input(self) -> None:
+        self._reading = False  # (called inside the read's except: the robot's sentences now come
+        if self.status is not None:  # without a prompt under them)
+            self.status.left_prompt()
         if self.manager.busy:
             self._print("\n(waiting for the robot to finish; Ctrl-C stops it)")
+            if self.status is not None:  # its status line goes on ticking, with no prompt under it
+                self.status.prompt, self._leaving_wait = "", True
             self.manager.wait()
+            self._leaving_wait = False
         self._print("\nGoodbye.")
 
     def _teach(self, turn: Turn) -> None:

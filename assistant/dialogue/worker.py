@@ -56,7 +56,7 @@ class TaskWorker:
         """While a task runs: what it is doing now and for how many seconds it has run (a front
         end's status line, see :class:`~assistant.dialogue.statusline.StatusLine`); else None."""
         job = self.job
-        if job is None or not self.busy:
+        if job is None or not self.busy or job.final is not None:  # (final: its reply is being said)
             return None
         return job.doing, time.monotonic() - job.started
 

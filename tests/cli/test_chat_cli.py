@@ -89,6 +89,23 @@ def test_fetch_to_the_end_updates_memory_and_eof_leaves(tmp_path):
     assert set(rooms) <= {"mug", "monitor", "statue", "fork", "glasses case", "laptop"}
 
 
+def test_ctrl_d_while_the_robot_works_waits_with_its_status_line_ticking(tmp_path):
+    child = spawn(tmp_path)
+    child.expect_exact(PROMPT)
+    child.sendline("where is my mug")  # never seen: a search of the home, many seconds
+    child.expect("I'll go and look for it")
+    child.expect_exact('"stop" stops me)')  # the status line: readline is reading by now
+    child.sendeof()  # Ctrl-D: leave once the robot has finished
+    child.expect_exact("(waiting for the robot to finish")
+    child.expect_exact('"stop" stops me)')  # it goes on ticking while the chat waits ...
+    assert PROMPT not in child.before  # ... with no prompt under it
+    child.expect("Found it: the mug is in the bedroom")
+    child.expect("Goodbye")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+
+
 def test_ctrl_c_at_the_prompt_then_ctrl_c_leaves_at_once(tmp_path):
     child = spawn(tmp_path)
     child.expect_exact(PROMPT)
