@@ -5,11 +5,12 @@ Two kinds of waits: a counted stage ("fetch trials 12/128") and a step of unknow
 ``tqdm`` on a terminal — a bar with a count and a rate, or the step's elapsed seconds — redrawn
 every half second so a long step never looks hung; :func:`quiet` says nothing.
 
-**The rule, kept here only** (:func:`hook_for`): progress is shown when stderr is a terminal,
-and is quiet with ``--json`` (its stdout is read by a program) or when stderr is not a terminal
-(a pipe, a log, a test: no bars or control characters in them). The command line applies it
-once per command (:func:`set_hook`); every evaluation's progress callback comes from it too
-(``assistant.cli.common.progress_for``). Library code reports long steps through
+**The rule, kept here only** (:func:`shows_progress`, applied by :func:`hook_for`): progress is
+shown when stderr is a terminal, and is quiet with ``--json`` (its stdout is read by a program)
+or when stderr is not a terminal (a pipe, a log, a test: no bars or control characters in
+them). The command line applies it once per command (:func:`set_hook`); every evaluation's
+progress callback comes from it too (``assistant.cli.common.progress_for``); the chat's status
+line applies it to the chat's output (:mod:`assistant.dialogue.statusline`). Library code reports long steps through
 :func:`working` and :func:`counted`, which use the process's hook (by default the rule applied to
 the process's stderr). A hook has the signature of :class:`assistant.eval.progress.Progress`:
 ``hook(what, done=None, total=None)``.
@@ -122,13 +123,18 @@ def is_terminal(stream) -> bool:
         return False
 
 
+def shows_progress(json_output: bool = False, stream=None) -> bool:
+    """The one rule for where progress goes (see the module): on ``stream`` (stderr) when it is a
+    terminal, never with ``json_output``. :func:`hook_for` applies it; so does the chat's status
+    line (:mod:`assistant.dialogue.statusline`), which ticks at its prompt on stdout."""
+    return not json_output and is_terminal(stream or sys.stderr)
+
+
 def hook_for(json_output: bool = False, stream=None) -> Hook:
-    """The one rule for where progress goes (see the module): a :class:`TerminalProgress` on
-    ``stream`` (stderr) when it is a terminal; :func:`quiet` with ``json_output`` or when it is not."""
+    """A :class:`TerminalProgress` on ``stream`` (stderr) where :func:`shows_progress`, else
+    :func:`quiet`."""
     stream = stream or sys.stderr
-    if json_output or not is_terminal(stream):
-        return quiet
-    return TerminalProgress(stream)
+    return TerminalProgress(stream) if shows_progress(json_output, stream) else quiet
 
 
 def installed_hook() -> Hook | None:

@@ -128,13 +128,14 @@ def exit_cost(command: list[str], plain: bool) -> tuple[float, float]:
     return usage.ru_utime + usage.ru_stime - at_last_handler, ended - last
 
 
-def chat_silence(say: str, settle_s: float, data_dir: str) -> tuple[float, float, str]:
-    """(seconds to the first output, longest gap after it, what ended that gap) of one chat."""
+def chat_silence(say: str, settle_s: float, data_dir: str) -> tuple[float, float, str, float]:
+    """(seconds to the first output, longest gap after it, what ended that gap, seconds from the
+    command typed to the chat's last output) of one chat."""
     child = pexpect.spawn(sys.executable, ["-m", "assistant", "chat", "--world", "apartment"],
                           env=_env({"ASSISTANT_DATA": data_dir}), encoding="utf-8", timeout=None,
                           dimensions=(40, 200))
     started = last = time.monotonic()
-    first, longest, after, typed = None, 0.0, "", False
+    first, longest, after, typed, typed_at = None, 0.0, "", False, 0.0
     try:
         while time.monotonic() - last < settle_s:
             try:
@@ -149,13 +150,20 @@ def chat_silence(say: str, settle_s: float, data_dir: str) -> tuple[float, float
             last = now
             if not typed and "you> " in text:
                 child.sendline(say)
-                typed = True
+                typed, typed_at = True, time.monotonic()
     except pexpect.EOF:
         pass
     finally:
-        child.sendeof()
-        child.close(force=True)
-    return first or 0.0, longest, after
+        child.sendeof()  # Ctrl-D leaves the chat; a slow exit under load must not lose the figures
+        try:
+            child.expect(pexpect.EOF, timeout=60)
+        except pexpect.ExceptionPexpect:
+            pass
+        try:
+            child.close(force=True)
+        except pexpect.ExceptionPexpect:
+            pass
+    return first or 0.0, longest, after, last - typed_at if typed else 0.0
 
 
 def main() -> int:
@@ -176,9 +184,10 @@ def main() -> int:
     args = parser.parse_args()
     if args.what == "chat-silence":
         with tempfile.TemporaryDirectory() as data:
-            first, longest, after = chat_silence(args.say, args.settle, data)
+            first, longest, after, busy = chat_silence(args.say, args.settle, data)
         print(f"chat: first line after {first:.2f} s, then the longest gap {longest:.2f} s (target <= 3 s) "
-              f"around {args.say!r}\n  it ended with: {after.strip()[-120:]!r}")
+              f"around {args.say!r} ({busy:.1f} s from typing it to the last line)\n"
+              f"  it ended with: {after.strip()[-120:]!r}")
         return 0
     if args.what == "exit":
         command = [c for c in args.command if c != "--"]

@@ -1,4 +1,5 @@
-"""Understanding the answer to "which one?" in context, and the robot's progress sentences."""
+"""Understanding the answer to "which one?" in context, and the robot's progress sentences and
+activity phrases."""
 
 from __future__ import annotations
 
@@ -80,6 +81,26 @@ def progress_sentence(name: str, data: dict, words: dict) -> str | None:
         return f"Looking in the {data.get('room')}."
     if name == "room_skipped":
         return f"I can't get into the {data.get('room')} — skipping it."
+    return None
+
+
+def activity_phrase(name: str, data: dict) -> str | None:
+    """What the robot is doing after one executor event, for the chat's ticking status line
+    ("searching the kitchen"; None: the event changes nothing). Shown, never spoken: the
+    sentences the robot says are :func:`progress_sentence`'s."""
+    room = data.get("room")
+    if name == "search_room":
+        return f"going to the {room}"
+    if name == "entered":
+        return f"in the {room}"
+    if name == "vantage":
+        return f"looking around the {room}"
+    if name == "better_view":
+        return "moving for a better look"
+    if name == "look_again":
+        return "taking another look"
+    if name == "move_to":
+        return "moving into place"
     return None
 
 

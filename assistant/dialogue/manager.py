@@ -74,6 +74,11 @@ class DialogueManager:
         """A fetch or search is running and has not been asked to stop."""
         return self.worker.busy
 
+    @property
+    def activity(self) -> tuple[str, float] | None:
+        """While a task runs: (what the robot is doing now, seconds since it started); else None."""
+        return self.worker.activity
+
     def greeting(self) -> str:
         return (f"Hello! I'm in the {self.world.name} ({_join(['the ' + r for r in self.rooms])}). "
                 "Ask me to fetch something, where something is, or say \"help\" to hear what I can do.")

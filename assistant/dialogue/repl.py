@@ -7,6 +7,7 @@ import json
 import os
 import sys
 import threading
+import time
 from pathlib import Path
 
 from assistant.dialogue.manager import DialogueManager
@@ -17,6 +18,15 @@ from assistant.errors import AssistantError
 from assistant.fileio import PRIVATE_FILE_MODE, atomic_write_text, private_dir
 
 PROMPT = "you> "
+
+
+def _typed() -> str:
+    """What has been typed at the prompt so far (readline's line; "" without readline)."""
+    try:
+        import readline
+    except ImportError:
+        return ""
+    return readline.get_line_buffer()
 
 
 class ChatSession:
@@ -43,6 +53,8 @@ class ChatSession:
         self._interrupts = 0
         self._interrupt_lock = threading.Lock()
         self._reading = False
+        self._reading_since = 0.0
+        self._leaving_wait = False  # Ctrl-D came while the robot works: waiting for it to finish
         self._leaving = False
         self.interactive = self.stdin.isatty()
         self.records: list[dict] = []
@@ -50,6 +62,7 @@ class ChatSession:
         # what the robot says; None: the terminal alone
         self.read_line = None  # () -> str, raising EOFError at the end
         self.speak = None  # (sentence) -> None
+        self.status = None  # the ticking status line while the robot works (a terminal's prompt only)
         self.manager = DialogueManager(self.world, self.scene, self.services, self.memory, say=self._progress,
                                        on_finish=self._finished)
         if getattr(args, "view", False):
@@ -59,13 +72,10 @@ class ChatSession:
     def _print(self, text: str, redraw: bool = False) -> None:
         with self._print_lock:
             if redraw and self.interactive and self._reading:
-                self.out.write("\r\033[K" + text + "\n" + PROMPT)
-                try:
-                    import readline
-
-                    self.out.write(readline.get_line_buffer())
-                except ImportError:
-                    pass
+                erase = self.status.erase() if self.status is not None else "\r\033[K"
+                self.out.write(erase + text + "\n" + PROMPT + _typed())
+            elif self.status is not None and self.status.drawn:  # waiting to leave: no prompt below
+                self.out.write(self.status.erase() + text + "\n")
             else:
                 self.out.write(text + "\n")
             self.out.flush()
@@ -196,9 +206,10 @@ class ChatSession:
         watcher = InterruptWatcher(self._on_interrupt, lambda: self._reading)
         try:
             watcher.start()
+            self._start_status()
             while not self._leaving:
                 try:
-                    self._reading = True
+                    self._reading, self._reading_since = True, time.monotonic()
                     if self._leaving:  # a second Ctrl-C came while the last line was handled
                         break
                     line = self._read()
@@ -209,6 +220,8 @@ class ChatSession:
                     break
                 finally:
                     self._reading = False
+                    if self.status is not None:
+                        self.status.left_prompt()
                 with self._interrupt_lock:
                     self._interrupts = 0
                 if not line.strip():
@@ -229,11 +242,29 @@ class ChatSession:
                 self._print("\nGoodbye.")
         finally:
             watcher.stop()
+            if self.status is not None:
+                self.status.stop()
             self.manager.close(timeout=5.0)
             self._save_history(readline)
             if self.view is not None:
                 self.view.close()
         return 0
+
+    def _start_status(self) -> None:
+        """While the robot works, a ticking line above the typed prompt says what it is doing
+        (:mod:`~assistant.dialogue.statusline`): where progress is shown (a terminal), and not
+        when another front end (speech) reads the utterances."""
+        from assistant.dialogue.statusline import StatusLine
+        from assistant.progress import shows_progress
+
+        if self.interactive and self.read_line is None and shows_progress(stream=self.out):
+            self.status = StatusLine(self.out, self._print_lock, PROMPT, lambda: self.manager.activity,
+                                     self._at_prompt, _typed).start()
+
+    def _at_prompt(self) -> bool:
+        """The prompt is on screen, waiting (``input`` draws it just after ``_reading`` is set),
+        or the chat waits for the robot before it leaves (the status line then has no prompt)."""
+        return self._leaving_wait or (self._reading and time.monotonic() - self._reading_since > 0.2)
 
     def _on_interrupt(self) -> bool:
         """Ctrl-C (called by the watcher thread the moment it arrives): the first stops the
@@ -253,9 +284,15 @@ class ChatSession:
         return False
 
     def _end_of_input(self) -> None:
+        self._reading = False  # (called inside the read's except: the robot's sentences now come
+        if self.status is not None:  # without a prompt under them)
+            self.status.left_prompt()
         if self.manager.busy:
             self._print("\n(waiting for the robot to finish; Ctrl-C stops it)")
+            if self.status is not None:  # its status line goes on ticking, with no prompt under it
+                self.status.prompt, self._leaving_wait = "", True
             self.manager.wait()
+            self._leaving_wait = False
         self._print("\nGoodbye.")
 
     def _teach(self, turn: Turn) -> None:

@@ -15,7 +15,7 @@ import time
 from dataclasses import dataclass
 
 from assistant.app import Status, Stopped
-from assistant.dialogue.clarify import progress_sentence
+from assistant.dialogue.clarify import activity_phrase, progress_sentence
 from assistant.dialogue.replies import ReplyContext, fetch_reply, search_reply
 from assistant.dialogue.seen import SeenRecorder
 from assistant.dialogue.turns import Turn
@@ -31,6 +31,9 @@ class Job:
     thread: threading.Thread | None = None
     final: Turn | None = None
     kind: str = "fetch"
+    #: what the robot is doing now, from the task's events (:func:`activity_phrase`)
+    doing: str = ""
+    started: float = 0.0  # time.monotonic() when the job started
 
 
 class TaskWorker:
@@ -47,6 +50,15 @@ class TaskWorker:
         """A task is running and has not been asked to stop."""
         job = self.job
         return job is not None and job.thread.is_alive() and not job.stop.is_set()
+
+    @property
+    def activity(self) -> tuple[str, float] | None:
+        """While a task runs: what it is doing now and for how many seconds it has run (a front
+        end's status line, see :class:`~assistant.dialogue.statusline.StatusLine`); else None."""
+        job = self.job
+        if job is None or not self.busy or job.final is not None:  # (final: its reply is being said)
+            return None
+        return job.doing, time.monotonic() - job.started
 
     def stop(self) -> bool:
         """Ask the running task to stop; True when one was running."""
@@ -71,7 +83,8 @@ class TaskWorker:
     def start(self, kind: str, text: str, room: str | None, obj: str | None, style: str = "static") -> None:
         """Run a fetch (``text``: the command) or a search (``text``: the object) in a thread."""
         previous = self.job
-        job = Job(threading.Event(), kind=kind)
+        doing = f"looking for your {text}" if kind == "search" else (f"fetching the {obj}" if obj else "on my way")
+        job = Job(threading.Event(), kind=kind, doing=doing, started=time.monotonic())
         job.thread = threading.Thread(target=self._run, args=(job, previous, text, room, obj, style),
                                       name=f"assistant-{kind}", daemon=True)
         self.job = job
@@ -106,6 +119,7 @@ class TaskWorker:
                 if job.kind == "search" and obj and obj in recorder.latest and obj not in announced:
                     announced.add(obj)
                     self.speak(f"I can see your {obj}!")
+            job.doing = activity_phrase(name, data) or job.doing
             sentence = progress_sentence(name, data, words)
             if sentence:
                 self.speak(sentence)

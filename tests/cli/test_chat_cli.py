@@ -37,8 +37,11 @@ def test_conversation_ctrl_c_stops_then_leaves(tmp_path):
     child.expect_exact(PROMPT)
     child.sendline("where is my mug")  # never seen: the robot searches the home
     child.expect("I'll go and look for it")
-    child.expect("Looking in the")
     child.expect("Found it: the mug is in the bedroom")
+    searching = child.before
+    assert "Looking in the" in searching  # the robot's sentences
+    # and between them a status line above the prompt, ticking while it works (a terminal only)
+    assert "— \"stop\" stops me)" in searching and "(looking around the " in searching
     child.expect_exact(PROMPT)
     # Ctrl-C the instant the robot has set off, several times in a row, with no pause: the
     # watcher thread handles each SIGINT as it arrives, whatever the main thread is doing
@@ -84,6 +87,23 @@ def test_fetch_to_the_end_updates_memory_and_eof_leaves(tmp_path):
     rooms = {s["object"]: s["room"] for s in memory["sightings"]}
     assert rooms["mug"] == "bedroom"  # and whatever else the robot saw on the way
     assert set(rooms) <= {"mug", "monitor", "statue", "fork", "glasses case", "laptop"}
+
+
+def test_ctrl_d_while_the_robot_works_waits_with_its_status_line_ticking(tmp_path):
+    child = spawn(tmp_path)
+    child.expect_exact(PROMPT)
+    child.sendline("where is my mug")  # never seen: a search of the home, many seconds
+    child.expect("I'll go and look for it")
+    child.expect_exact('"stop" stops me)')  # the status line: readline is reading by now
+    child.sendeof()  # Ctrl-D: leave once the robot has finished
+    child.expect_exact("(waiting for the robot to finish")
+    child.expect_exact('"stop" stops me)')  # it goes on ticking while the chat waits ...
+    assert PROMPT not in child.before  # ... with no prompt under it
+    child.expect("Found it: the mug is in the bedroom")
+    child.expect("Goodbye")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
 
 
 def test_ctrl_c_at_the_prompt_then_ctrl_c_leaves_at_once(tmp_path):

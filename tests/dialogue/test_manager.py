@@ -2,6 +2,7 @@
 fetcher (the real one is exercised by `assistant eval dialogue` and the chat CLI test)."""
 
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -160,3 +161,63 @@ def test_text_with_no_words_is_answered_and_a_blank_line_is_silent(services, tmp
     turn = m.handle("!!! ??? ...")
     assert turn.action == "answer" and "didn't catch any words" in turn.reply
     assert m.handle("   ").reply == ""
+
+
+class SteppedFetcher:
+    """Holds before its events and after them until the test lets it go on."""
+
+    def __init__(self):
+        self.waiting, self.go, self.reported, self.release = (threading.Event() for _ in range(4))
+
+    def __call__(self, text, world, scene, on_event):
+        self.waiting.set()
+        self.go.wait(10)
+        on_event("entered", {"room": "bedroom", "result": None})
+        on_event("vantage", {"room": "bedroom", "pose": None})
+        self.reported.set()
+        self.release.wait(10)
+        return fetch_result(True, "hexagontable_1")
+
+
+def test_the_activity_of_a_running_task_follows_its_events(services, tmp_path):
+    said = []
+    fetcher = SteppedFetcher()
+    m = make(services, tmp_path, fetcher, said)
+    assert m.activity is None
+    m.handle("bring me the mug from the table to the right of the chair in the bedroom")
+    assert fetcher.waiting.wait(10)
+    assert m.activity[0] == "fetching the mug" and m.activity[1] >= 0
+    fetcher.go.set()
+    assert fetcher.reported.wait(10)
+    assert m.activity[0] == "looking around the bedroom"  # the last event that says what it does
+    assert "looking around the bedroom" not in said  # shown on the status line, never spoken
+    fetcher.release.set()
+    assert m.wait(10).outcome == "success"
+    assert m.activity is None
+
+
+def test_the_chat_shows_its_status_line_on_a_terminal_only(tmp_path, monkeypatch):
+    import argparse
+    import io
+
+    from assistant.dialogue.repl import ChatSession
+
+    monkeypatch.setenv("ASSISTANT_DATA", str(tmp_path))
+    args = argparse.Namespace(world="apartment", scene="original", perception="oracle", memory=None,
+                              transcripts=None, seed=0)
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    # typed at a terminal, the replies going to a pipe or a log: no status line in them
+    session = ChatSession(args, stdin=Terminal("hello\n"), stdout=io.StringIO())
+    session._start_status()
+    assert session.status is None
+    shown = ChatSession(args, stdin=Terminal("hello\n"), stdout=Terminal())
+    shown.read_line = lambda: "hello"  # another front end (speech) reads the utterances: none either
+    shown._start_status()
+    assert shown.status is None
+    shown.read_line = None
+    shown._start_status()  # both ends a terminal: shown
+    assert shown.status is not None
+    shown.status.stop()
