@@ -20,7 +20,8 @@ utterance is the mean posterior probability of its words (pocketsphinx's lattice
 The recogniser knows the home it serves (``world``, or :meth:`use_home`): when the home search's
 best words name a room of another home ("meeting room" in a flat without one), the next
 hypotheses of its n-best list whose score is within ``home_margin`` are tried, and the first
-naming only rooms the home has is taken. Words outside every home (open vocabulary) are never
+naming only rooms the home has, and differing from the best words in at most ``ROOM_EDITS`` words,
+is taken. Words outside every home (open vocabulary) are never
 penalised: only room names known from some home count.
 """
 
@@ -48,6 +49,9 @@ DEFAULT_FLOOR_DB = 30.0
 #: the best words for naming the home's room rather than another home's
 NBEST = 20
 DEFAULT_HOME_MARGIN = 0.05
+#: at most this many words may differ from the best words (the room's name: "meeting" → "living"),
+#: so that a hypothesis rewriting the rest of the sentence is not taken for its room
+ROOM_EDITS = 2
 
 
 class PocketsphinxRecogniser(Recogniser):
@@ -145,8 +149,11 @@ class PocketsphinxRecogniser(Recogniser):
         """The home search's best words, or a near n-best hypothesis naming only the home's rooms
         when the best names a room of another home (its words get the best's mean posterior)."""
         words = _words(self._home)
-        if not self._foreign or not _names_any(" ".join(w for w, *_ in words), self._foreign):
+        heard = [w for w, *_ in words]
+        if not self._foreign or not _names_any(" ".join(heard), self._foreign):
             return words
+        from rapidfuzz.distance import Levenshtein
+
         best = None
         for n, hyp in enumerate(self._home.nbest()):
             if n >= NBEST:
@@ -155,7 +162,8 @@ class PocketsphinxRecogniser(Recogniser):
             if hyp.score < best - self.home_margin * abs(best):
                 continue
             text = " ".join(w.split("(", 1)[0] for w in hyp.hypstr.split() if w not in FILLERS and w[:1] not in "+[")
-            if _names_any(text, self._rooms) and not _names_any(text, self._foreign):
+            if (_names_any(text, self._rooms) and not _names_any(text, self._foreign)
+                    and Levenshtein.distance(heard, text.split()) <= ROOM_EDITS):
                 confidence = _confidence(words)
                 return [(w, 0.0, 0.0, confidence) for w in text.split()]
         return words
