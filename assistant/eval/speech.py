@@ -61,10 +61,11 @@ class _Parsers:
 
 def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int | None = None, all_voices: bool = False,
                     kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
-                    shard: tuple[int, int] = (1, 1), progress: Progress = no_progress) -> dict:
+                    shard: tuple[int, int] = (1, 1), home: bool = True, progress: Progress = no_progress) -> dict:
     """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor).
     ``shard`` (i, n): only every n-th utterance from the i-th (1-based), to run in parallel
-    processes; :func:`merge_reports` joins their reports."""
+    processes; :func:`merge_reports` joins their reports. ``home``: tell the recogniser each
+    utterance's home (:meth:`~assistant.dialogue.speech.recogniser.Recogniser.use_home`)."""
     from assistant.dialogue import classify
     from assistant.dialogue.speech.listener import DEFAULT_CONFIRM_BELOW
     from assistant.dialogue.speech.recogniser import make_recogniser
@@ -84,6 +85,8 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
     for n, item in enumerate(todo, start=1):
         progress("speech test set", n, len(todo))
         audio = speech_data.audio_of(item)
+        if home:
+            recogniser.use_home(parsers(item.world).world)  # the recogniser knows the home it serves
         heard = recogniser.recognise(audio)
         ref = item.reference
         row = {"id": item.id, "kind": item.kind, "world": item.world, "voice": item.voice, "rate": item.rate,
@@ -99,7 +102,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
         rows.append(row)
     recogniser.close()
     head = {"engine": engine, "recogniser": recogniser.describe(), "per_kind": per_kind, "all_voices": all_voices,
-            "confirm_below": threshold, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
+            "confirm_below": threshold, "home": home, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
     return report_of(rows, head)
 
 

@@ -74,6 +74,9 @@ class Recogniser(ABC):
         """Whether ``keyword`` is said in ``samples`` (barge-in); engines may do better."""
         return keyword in self.recognise(samples).transcript.split()
 
+    def use_home(self, world) -> None:
+        """The home the words come from (engines may prefer its rooms; None: any home)."""
+
     def describe(self) -> dict:
         """Engine, model and settings, for ``--json`` outputs and the docs."""
         return {"engine": self.name}

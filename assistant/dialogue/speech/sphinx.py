@@ -16,6 +16,13 @@ speech, a close microphone in a quiet room) is decoded with white noise added ``
 (30 dB) under the speech's power — on the clean synthetic test set this cut the word error
 about fourfold (docs/speech.md); in real rooms the noise is already louder and it changes nothing. The confidence of an
 utterance is the mean posterior probability of its words (pocketsphinx's lattice posteriors).
+
+The recogniser knows the home it serves (``world``, or :meth:`use_home`): when the home search's
+best words name a room of another home ("meeting room" in a flat without one), the next
+hypotheses of its n-best list whose score is within ``home_margin`` are tried, and the first
+naming only rooms the home has, and differing from the best words in at most ``ROOM_EDITS`` words,
+is taken. Words outside every home (open vocabulary) are never
+penalised: only room names known from some home count.
 """
 
 from __future__ import annotations
@@ -37,11 +44,21 @@ FILLERS = frozenset({"<s>", "</s>", "<sil>", "<unk>"})
 FRAME_S = 0.01
 #: the noise floor added before decoding, in dB under the speech's power (None: none)
 DEFAULT_FLOOR_DB = 30.0
+#: how many n-best hypotheses are looked at, and how far under the first one's score one may
+#: score (a share of it: the scores are per-frame probabilities, ~0.3-0.5 here) and still replace
+#: the best words for naming the home's room rather than another home's
+NBEST = 20
+DEFAULT_HOME_MARGIN = 0.05
+#: at most this many words may differ from the best words (the room's name: "meeting" → "living"),
+#: so that a hypothesis rewriting the rest of the sentence is not taken for its room
+ROOM_EDITS = 2
 
 
 class PocketsphinxRecogniser(Recogniser):
     """``model``: a :class:`~assistant.dialogue.speech.language_model.HomeModel` (default: built
-    from the corpus and the homes, cached); ``world``: add that world's words; ``open_fallback``:
+    from the corpus and the homes, cached); ``world``: add that world's words and prefer its rooms
+    (:meth:`use_home`); ``home_margin``: how far (a share of the first n-best score) under it a
+    hypothesis naming the home's room may score and still win; ``open_fallback``:
     use the general model when unsure; ``open_below``: the confidence under which it is tried;
     ``open_margin``: how much more confident its words must be to be taken; ``floor_db``: the
     noise floor added before decoding (dB under the speech, None: none).
@@ -51,7 +68,7 @@ class PocketsphinxRecogniser(Recogniser):
 
     def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.3,
                  open_margin: float = 0.3, settings: dict | None = None, asr_model=None,
-                 floor_db: float | None = DEFAULT_FLOOR_DB):
+                 floor_db: float | None = DEFAULT_FLOOR_DB, home_margin: float = DEFAULT_HOME_MARGIN):
         if asr_model is not None:
             raise RecogniserError("pocketsphinx uses its packaged en-US model; --asr-model is for --asr vosk")
         ps = require("pocketsphinx", "pip install pocketsphinx", RecogniserError)
@@ -65,6 +82,10 @@ class PocketsphinxRecogniser(Recogniser):
             raise RecogniserError(f"pocketsphinx cannot load the home model {self.model.lm} ({error}); "
                                   "delete it to rebuild it") from None
         self.floor_db = floor_db
+        self.home_margin = home_margin
+        self._rooms: frozenset[str] = frozenset()  # the home's rooms
+        self._foreign: tuple[str, ...] = ()  # rooms of other homes (not of this one)
+        self.use_home(world)
         self.open_fallback = open_fallback
         self.open_below = open_below
         self.open_margin = open_margin
@@ -81,6 +102,18 @@ class PocketsphinxRecogniser(Recogniser):
         if self._loader is not None:
             self._loader.join()
 
+    def use_home(self, world) -> None:
+        """Prefer, among near hypotheses, words naming ``world``'s rooms (None: no preference)."""
+        if world is None:
+            self._rooms, self._foreign = frozenset(), ()
+            return
+        from assistant.dialogue.speech.vocabulary import home_words
+
+        if not hasattr(self, "_known_rooms"):
+            self._known_rooms = frozenset(home_words()["rooms"])
+        self._rooms = frozenset(world.floorplan.room_names)
+        self._foreign = tuple(sorted(self._known_rooms - self._rooms))
+
     # ------------------------------------------------------------------ models
     def _load_open(self):
         with self._open_lock:
@@ -96,6 +129,7 @@ class PocketsphinxRecogniser(Recogniser):
     def describe(self) -> dict:
         return {"engine": self.name, "home_lm": str(self.model.lm), "home_words": self.model.words,
                 "open_fallback": self.open_fallback, "open_below": self.open_below, "floor_db": self.floor_db,
+                "home_margin": self.home_margin, "home_rooms": sorted(self._rooms),
                 "settings": {k: v for k, v in self.settings.items() if k != "loglevel"}}
 
     # ------------------------------------------------------------------ decoding
@@ -105,10 +139,34 @@ class PocketsphinxRecogniser(Recogniser):
         if self.floor_db is not None:
             samples = with_noise_floor(samples, self.floor_db)
         pcm = to_pcm16(samples)
-        return self._choose(_decode(self._home, pcm), pcm, start)
+        _decode(self._home, pcm)
+        return self._choose(self._home_words(), pcm, start)
 
     def stream(self) -> "SphinxStream":
         return SphinxStream(self)
+
+    def _home_words(self) -> list[tuple[str, float, float, float]]:
+        """The home search's best words, or a near n-best hypothesis naming only the home's rooms
+        when the best names a room of another home (its words get the best's mean posterior)."""
+        words = _words(self._home)
+        heard = [w for w, *_ in words]
+        if not self._foreign or not _names_any(" ".join(heard), self._foreign):
+            return words
+        from rapidfuzz.distance import Levenshtein
+
+        best = None
+        for n, hyp in enumerate(self._home.nbest()):
+            if n >= NBEST:
+                break
+            best = hyp.score if best is None else best
+            if hyp.score < best - self.home_margin * abs(best):
+                continue
+            text = " ".join(w.split("(", 1)[0] for w in hyp.hypstr.split() if w not in FILLERS and w[:1] not in "+[")
+            if (_names_any(text, self._rooms) and not _names_any(text, self._foreign)
+                    and Levenshtein.distance(heard, text.split()) <= ROOM_EDITS):
+                confidence = _confidence(words)
+                return [(w, 0.0, 0.0, confidence) for w in text.split()]
+        return words
 
     def _choose(self, words, pcm: bytes, start: float) -> Recognition:
         """The home search's words, or the open search's when the home one is unsure."""
@@ -157,9 +215,15 @@ class SphinxStream(RecognitionStream):
     def finish(self) -> Recognition:
         start = time.perf_counter()
         self.recogniser._home.end_utt()
-        result = self.recogniser._choose(_words(self.recogniser._home), to_pcm16(self.samples), start)
+        result = self.recogniser._choose(self.recogniser._home_words(), to_pcm16(self.samples), start)
         result.decode_s += self.decode_s
         return result
+
+
+def _names_any(text: str, phrases) -> bool:
+    """Whether ``text`` holds one of ``phrases`` as whole words."""
+    padded = f" {text} "
+    return any(f" {p} " in padded for p in phrases)
 
 
 def _decode(decoder, pcm: bytes) -> list[tuple[str, float, float, float]]:
