@@ -132,7 +132,10 @@ def test_where_is_my_wallet_in_a_lived_in_home(apartment):
 
 
 def test_the_robot_searches_a_lived_in_home_for_my_keys(apartment):
-    result = Finder().where_is("my keys", apartment, "lived-in")
+    # furniture from the world file (sensed furniture in the lived-in scenes is measured by
+    # `assistant eval fetch --scene lived-in`); the robot still searches for the keys with its
+    # object detector: 14 s instead of 92 s
+    result = Finder().where_is("my keys", apartment, "lived-in", perception="oracle")
     assert result.success and result.data["found"], result.message
     assert result.object == "keys" and "living room" in result.message
     assert result.description.environment == "perceived"
