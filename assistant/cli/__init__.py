@@ -63,15 +63,7 @@ def json_output(args: argparse.Namespace) -> bool:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """The program (``argv`` None: the command line of this process) → its exit status."""
-    code = _run(argv)
-    tts = sys.modules.get("assistant.dialogue.speech.tts")
-    if argv is None and tts is not None:  # the process itself, not a caller in Python
-        tts.leave_if_synthesis_hung(code)
-    return code
-
-
-def _run(argv: list[str] | None) -> int:
+    """A command line (``argv`` None: this process's) → its exit status."""
     limit_openmp_threads()
     from assistant.cli.common import join_negative_values
 
@@ -107,8 +99,14 @@ def _run(argv: list[str] | None) -> int:
 def program() -> int:
     """The ``assistant`` program (the console script and ``python -m assistant``): :func:`main`
     on the process's arguments, then :func:`~assistant.runtime.prepare_to_exit`, so the process
-    ends at once after its last line instead of spending a second or more freeing its models."""
+    ends at once after its last line instead of spending a second or more freeing its models.
+    A speech synthesis still hung at that point ends the process at once with the command's
+    status (:func:`~assistant.dialogue.speech.tts.leave_if_synthesis_hung`)."""
     try:
-        return main()
+        code = main()
+        tts = sys.modules.get("assistant.dialogue.speech.tts")  # loaded only when a command spoke
+        if tts is not None:
+            tts.leave_if_synthesis_hung(code)
+        return code
     finally:
         prepare_to_exit()

@@ -35,3 +35,21 @@ def test_the_console_script_and_python_m_run_the_program():
     root = Path(__file__).resolve().parents[2]
     assert 'assistant = "assistant.cli:program"' in (root / "pyproject.toml").read_text()
     assert "raise SystemExit(program())" in (root / "assistant" / "__main__.py").read_text()
+
+
+def test_the_program_hands_its_status_to_a_hung_synthesis_check(monkeypatch):
+    """The program's end (not ``main``, which tests and notebooks call too) asks the speech
+    output whether a synthesis still hangs, with the command's status."""
+    import gc
+
+    from assistant import cli
+    from assistant.dialogue.speech import tts
+
+    asked = []
+    monkeypatch.setattr(cli, "main", lambda: 3)
+    monkeypatch.setattr(tts, "leave_if_synthesis_hung", asked.append)
+    try:
+        assert cli.program() == 3
+    finally:
+        gc.unfreeze()
+    assert asked == [3]
