@@ -305,22 +305,26 @@ def find_floor(points_camera: np.ndarray, mount: CameraMount | None, *, band_m: 
     if len(pts) < MIN_FLOOR_POINTS:
         return None
     range2 = np.einsum("ij,ij->i", pts, pts)
-    near = np.compress(range2 < near_m ** 2, pts, axis=0)
     candidates = []
+    wider = None  # the points within near_m + 2 m, gathered once and only when needed
     if previous is not None:
         wider = np.compress(range2 < (near_m + 2.0) ** 2, pts, axis=0)
         if (found := _reuse_floor(wider, previous)) is not None:
             return _floor_from_plane(*found, mount)
+    near_count = 0
     if mount is not None:
+        near = np.compress(range2 < near_m ** 2, pts, axis=0)
+        near_count = len(near)
         nominal = nominal_camera_to_floor(mount)
         # predicted plane in camera coordinates: n = R^T z, d = the camera height
         n = nominal[:3, :3].T @ np.array([0.0, 0.0, 1.0])
         found = _refine(near, np.append(n, nominal[2, 3]), band_m, seed)
         if found is not None:
             candidates.append(found)
-    if not candidates or candidates[0][1] < strong_support * len(near):
+    if not candidates or candidates[0][1] < strong_support * near_count:
         # no prediction, or a weak one (an approximate height/tilt given by hand): search
-        wider = np.compress(range2 < (near_m + 2.0) ** 2, pts, axis=0)
+        if wider is None:
+            wider = np.compress(range2 < (near_m + 2.0) ** 2, pts, axis=0)
         guess = _search_floor(wider, seed)
         if guess is not None:
             found = _refine(wider, guess, max(band_m, 0.1), seed)
