@@ -39,7 +39,8 @@ class FrameParams:
     (:func:`assistant.runtime.limit_openmp_threads`), but when open3d is loaded first it used
     both cores: measured on the loaded 2-core machine, 56 ms of CPU per simulated frame instead
     of 18 ms; numpy's two BLAS threads doubled the real frames' CPU time (32 → 58 ms;
-    ``bench_perception.py --threads``)."""
+    ``bench_perception.py --threads``). Until 2 Dec evening the limit did not reach open3d at
+    all in a process without the variable (a notebook, the benchmark): see :func:`thread_limit`."""
 
     target_width: int = 320
     max_range_m: float = 6.0
