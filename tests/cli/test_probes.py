@@ -236,8 +236,7 @@ def test_a_where_request_naming_a_list_is_refused_not_searched_for(tmp_path, cap
 
 
 @pytest.mark.parametrize("argv, words", [
-    (["eval", "grounding", "--rounds", "0"], "from 1 to 1000, got 0"),
-    (["eval", "grounding", "--rounds", "-1"], "from 1 to 1000, got -1"),
+    (["eval", "grounding", "--rounds", "-1"], "from 0 to 1000, got -1"),
     (["eval", "grounding", "--seed", "-3"], "a seed is from 0"),
     (["eval", "fetch", "--limit", "0"], "got 0"),
     (["eval", "policy", "--trials", "two"], "expected a whole number, got 'two'"),
