@@ -206,7 +206,7 @@ def finite_float(text: str) -> float:
 
 def whole_number(low: int = 1, high: int = 10**6):
     """An argparse type for a whole number from ``low`` to ``high`` (a count of rounds, trials,
-    folds, frames …): ``--rounds 0`` or ``--limit -1`` is refused with the range, not run."""
+    folds, frames …): ``--limit 0`` or ``--rounds -1`` is refused with the range, not run."""
     def parse(text: str) -> int:
         try:
             value = int(text)
