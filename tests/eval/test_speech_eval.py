@@ -36,8 +36,12 @@ def test_sentences_and_rotation_cover_kinds_voices_rates():
     kinds = {k for _, k, _ in said}
     from assistant.language.corpus import repo_root
 
-    dev = [line for line in (repo_root() / "corpus" / "fetch_dev.jsonl").read_text().splitlines() if line.strip()]
-    assert kinds == {"command", "where", "chat"} and sum(k == "command" for _, k, _ in said) == len(dev)
+    dev = [json.loads(line) for line in (repo_root() / "corpus" / "fetch_dev.jsonl").read_text().splitlines()
+           if line.strip()]
+    distinct = {(d["text"], d.get("world", "apartment")) for d in dev}
+    assert len(distinct) < len(dev)  # the dev set repeats commands in other scenes and seeds
+    assert kinds == {"command", "where", "chat"} and sum(k == "command" for _, k, _ in said) == len(distinct)
+    assert len(set(said)) == len(said)  # each sentence once
     assert not any(t.strip() in ("asdfgh", "blorp zing wibble") for t, _, _ in said)  # garbled turns left out
     all_items = items(snrs_db=(None,))
     assert {(i.voice, i.rate) for i in all_items} == {(v, r) for v in ("en-us", "en-us+f3", "en-us+m3", "en-us-nyc")
