@@ -27,8 +27,9 @@ penalised: only room names known from some home count.
 The front end is fitted to the voice (``vtln``, :mod:`~assistant.dialogue.speech.vtln`): a voice
 pitched above men's average (most women, children) is decoded with its frequency axis warped
 back towards the male-dominated acoustic model's. A whole utterance is warped by its own pitch; a
-stream, decoded while the person talks, by the pitch of the utterances heard before it in the
-conversation (:attr:`PocketsphinxRecogniser.speaker`).
+stream, decoded while the person talks, by the pitch of its first second (:class:`SphinxStream`),
+or of the conversation's earlier utterances when that holds too little voice
+(:attr:`PocketsphinxRecogniser.speaker`).
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ import numpy as np
 from assistant.dialogue.speech.audio import active_power, frame_energies, to_pcm16, with_noise_floor
 from assistant.dialogue.speech.errors import RecogniserError, require
 from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
-from assistant.dialogue.speech.vtln import SpeakerPitch, warp_for_pitch
+from assistant.dialogue.speech.vtln import SpeakerPitch, pitch_hz, warp_for_pitch
 
 #: decoder settings: pocketsphinx's language weights, wider beams than its defaults (fewer word
 #: errors in development, docs/speech.md), dither with a fixed seed
@@ -59,6 +60,8 @@ DEFAULT_HOME_MARGIN = 0.05
 #: at most this many words may differ from the best words (the room's name: "meeting" → "living"),
 #: so that a hypothesis rewriting the rest of the sentence is not taken for its room
 ROOM_EDITS = 2
+#: a stream holds this much audio (s) before choosing its warp from the voice's pitch
+VTLN_HOLD_S = 1.0
 
 
 class PocketsphinxRecogniser(Recogniser):
@@ -210,14 +213,20 @@ class PocketsphinxRecogniser(Recogniser):
 
 class SphinxStream(RecognitionStream):
     """The home search fed while the person talks: at the end only its last passes remain.
-    (Cepstral mean normalisation is then live rather than over the whole utterance.)"""
+    (Cepstral mean normalisation is then live rather than over the whole utterance.)
+
+    With VTLN the warp is the conversation's (the pitch of every utterance heard before: steadier
+    than a part of one, whose pitch falls from its start to its end). For the first utterance of a
+    conversation the first :data:`VTLN_HOLD_S` of audio are held until the warp is chosen from their
+    pitch; the decoder then catches up with them in a few tens of milliseconds, while the person is
+    still talking (an utterance shorter than that is decoded whole at its end)."""
 
     def __init__(self, recogniser: PocketsphinxRecogniser):
         super().__init__(recogniser)
-        self.warp = recogniser.speaker_warp()  # decoded as it comes: the voice of the earlier utterances
-        recogniser._home_front.use(self.warp)
-        recogniser._home.start_utt()
+        self.warp: float | None = None  # None: held until VTLN_HOLD_S have been heard
         self.decode_s = 0.0
+        if not recogniser.vtln or recogniser.speaker.hz is not None:
+            self._start(np.zeros(0, dtype=np.float32))
         self._energies: list[float] = []  # of the 30 ms frames so far: the speech's power
         self._rng = np.random.default_rng(0)
 
@@ -227,8 +236,23 @@ class SphinxStream(RecognitionStream):
         if self.recogniser.floor_db is not None and len(samples):
             samples = self._with_floor(samples)
         super().feed(samples)
-        self.recogniser._home.process_raw(to_pcm16(samples))
+        if self.warp is not None:
+            self.recogniser._home.process_raw(to_pcm16(samples))
+        elif len(self.samples) >= VTLN_HOLD_S * self.recogniser.sample_rate_hz:
+            self._start(self.samples)
         self.decode_s += time.perf_counter() - start
+
+    def _start(self, held: np.ndarray) -> None:
+        """Choose the warp (the conversation's, else ``held``'s pitch), start, decode ``held``."""
+        rec = self.recogniser
+        f0 = rec.speaker.hz if rec.vtln else None
+        if rec.vtln and f0 is None and len(held):
+            f0 = pitch_hz(held)
+        self.warp = warp_for_pitch(f0) if rec.vtln else 1.0
+        rec._home_front.use(self.warp)
+        rec._home.start_utt()
+        if len(held):
+            rec._home.process_raw(to_pcm16(held))
 
     def _with_floor(self, samples: np.ndarray) -> np.ndarray:
         """The noise floor, from the power of the speech heard so far (as in whole decoding)."""
@@ -241,6 +265,8 @@ class SphinxStream(RecognitionStream):
 
     def finish(self) -> Recognition:
         start = time.perf_counter()
+        if self.warp is None:  # shorter than the hold
+            self._start(self.samples)
         self.recogniser._home.end_utt()
         result = self.recogniser._choose(self.recogniser._home_words(), to_pcm16(self.samples), start, self.warp)
         if self.recogniser.vtln:
