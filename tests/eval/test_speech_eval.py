@@ -71,3 +71,8 @@ def test_quick_evaluation_of_where_questions_gives_rows_and_groups():
     row = report["rows"][0]
     assert row["plan_equal"] in (True, False) and row["decode_s"] > 0 and row["reference"] == "where is my mug"
     json.dumps(report)  # the --json output is plain JSON
+    # the voices rotate: en-us (a man's pitch) is not warped, en-us+f3 (a woman's) is
+    warps = {r["voice"]: r["warp"] for r in report["rows"]}
+    assert report["vtln"] and report["recogniser"]["vtln"] and warps["en-us"] == 1.0 and warps["en-us+f3"] > 1.0
+    plain = evaluate_speech(per_kind=2, kinds=["where"], snrs_db=(None,), open_fallback=False, vtln=False)
+    assert not plain["vtln"] and {r["warp"] for r in plain["rows"]} == {1.0}
