@@ -204,6 +204,21 @@ def finite_float(text: str) -> float:
     return value
 
 
+def whole_number(low: int = 1, high: int = 10**6):
+    """An argparse type for a whole number from ``low`` to ``high`` (a count of rounds, trials,
+    folds, frames …): ``--limit 0`` or ``--rounds -1`` is refused with the range, not run."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"expected a whole number from {low} to {high}, got {value}")
+        return value
+
+    return parse
+
+
 #: largest seed accepted (numpy's generators take 0 … 2**32 - 1)
 MAX_SEED = 2**32 - 1
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from assistant.cli.common import print_table, progress_for, show_report
+from assistant.cli.common import print_table, progress_for, seed_int, show_report, whole_number
 from assistant.errors import AssistantError
 from assistant.eval.fetch import DEFAULT_DEV_SET, OUTCOMES, REQUIRED
 
@@ -16,13 +16,14 @@ QUICK = ("--limit", "2", "--perception", "oracle")
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--perception", choices=("sensed", "oracle", "both"), default="both",
                         help="perception mode(s) to run (default: both)")
-    parser.add_argument("--limit", type=int, default=None, metavar="N", help="only the first N commands")
+    parser.add_argument("--limit", type=whole_number(1, 10**6), default=None, metavar="N",
+                        help="only the first N commands")
     parser.add_argument("--world", metavar="NAME", help="only the commands of this home")
     parser.add_argument("--scene", help="only this scene (original, modified, lived-in)")
     parser.add_argument("--dev-set", metavar="FILE", default=None,
                         help=f"JSON lines {{{', '.join(REQUIRED)}}} (default: {DEFAULT_DEV_SET.name} in corpus/)")
     parser.add_argument("--grounder", choices=("scored", "learned"), default=None)
-    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--seed", type=seed_int, default=0)
     parser.add_argument("--trials", metavar="FILE", help="also write every trial's JSON line to FILE")
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import percent, print_table, progress_for, show_report
+from assistant.cli.common import percent, print_table, progress_for, seed_int, show_report, whole_number
 from assistant.eval.grounding import DISSERTATION, FIELD_ROWS, GROUNDER_NAMES
 
 #: what ``--quick`` stands for (see assistant.cli.eval): one bootstrap round of the scored grounder
@@ -20,8 +20,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--test-world", metavar="NAME",
                         help="the home the test commands were given in (default: apartment for the "
                              "CSISL templates, whose living room is on the right and bedroom on the left)")
-    parser.add_argument("--rounds", type=int, default=10, help="bootstrap rounds for (a) (default 10)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first round")
+    parser.add_argument("--rounds", type=whole_number(0, 1000), default=10,
+                        help="bootstrap rounds for (a) (default 10; 0 skips (a))")
+    parser.add_argument("--seed", type=seed_int, default=0, help="seed of the first round")
     parser.add_argument("--grounder", choices=GROUNDER_NAMES, action="append",
                         help="evaluate only this grounder (repeatable; default all three)")
     parser.add_argument("--no-plans", dest="plans", action="store_false",
@@ -32,7 +33,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "leaves no spatial word unused (repeatable)")
     parser.add_argument("--descriptions-world", metavar="NAME", default="apartment",
                         help="the home the descriptions were given in (default apartment)")
-    parser.add_argument("--errors", type=int, default=0, metavar="N",
+    parser.add_argument("--errors", type=whole_number(0, 10**6), default=0, metavar="N",
                         help="also list up to N wrongly grounded test chunks per grounder")
 
 
@@ -55,9 +56,12 @@ def print_report(result: dict) -> None:
     names = list(result["corpus_split"])
     print(f"Training corpus: {result['corpus']['commands']} commands, {result['corpus']['chunks']} chunks "
           f"({', '.join(result['corpus']['files'])})\n")
-    _table("(a) our corpus, 2/3 train – 1/3 test, "
-           f"{result['protocol']['rounds']} bootstrap rounds (Table 4-3 form)",
-           result["corpus_split"], names)
+    if result["protocol"]["rounds"] > 0:
+        _table("(a) our corpus, 2/3 train – 1/3 test, "
+               f"{result['protocol']['rounds']} bootstrap rounds (Table 4-3 form)",
+               result["corpus_split"], names)
+    else:
+        print("(a) skipped: --rounds 0\n")
     if result["test"] is not None:
         _print_test(result, names)
     else:

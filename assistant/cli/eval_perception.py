@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import finite_float, print_table, progress_for, show_report
+from assistant.cli.common import finite_float, print_table, progress_for, show_report, whole_number
 from assistant.eval.perception import CATEGORY_ORDER, DEFAULT_CLASSIFIERS
 
 #: what ``--quick`` stands for (see assistant.cli.eval): the GSVM on the held-out views only
@@ -19,7 +19,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--classifiers", default=",".join(DEFAULT_CLASSIFIERS),
                         help="classifiers to compare (default: the dissertation's three, the random "
                              "forest and the GSVM+forest vote)")
-    parser.add_argument("--train-plans", type=int, default=None, metavar="K",
+    parser.add_argument("--train-plans", type=whole_number(1, 1000), default=None, metavar="K",
                         help="train on the first K training view plans only (default: all; 2 is "
                              "the previous default, without the views against a wall)")
     parser.add_argument("--range-m", type=finite_float, default=None, metavar="M",

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import print_table, progress_for, show_report
+from assistant.cli.common import print_table, progress_for, seed_int, show_report, whole_number
 
 #: what ``--quick`` stands for (see assistant.cli.eval): one RDT, one layout, one start pose
 QUICK = ("--rdt", "couch-front-table", "--layout", "apartment", "--trials", "1")
@@ -17,13 +17,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="test layouts (repeatable; default: training-home:modified and the "
                              "four study homes' original scenes)")
     parser.add_argument("--rdt", action="append", help="only these RDTs (repeatable)")
-    parser.add_argument("--trials", type=int, default=3, help="start poses per RDT and layout (3)")
-    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument("--trials", type=whole_number(1, 1000), default=3, help="start poses per RDT and layout (3)")
+    parser.add_argument("--seed", type=seed_int, default=7)
     parser.add_argument("--stop-rule", choices=("min-step", "score-falls"), default=None,
                         help="how the coarse-to-fine search ends (default: the model's, min-step)")
     parser.add_argument("--unrelated-over", choices=("all", "support"), default=None,
                         help="u of equation 5-16 over all values (default) or those seen in training")
-    parser.add_argument("--search-starts", type=int, default=None,
+    parser.add_argument("--search-starts", type=whole_number(1, 1000), default=None,
                         help="refine from this many of the best coarse poses (default 5)")
     parser.add_argument("--reachable-only", action="store_true", default=None,
                         help="search only floor connected to the robot (0.25 m clearance)")

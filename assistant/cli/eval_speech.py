@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import emit_json, percent, print_table, progress_for
+from assistant.cli.common import emit_json, percent, print_table, progress_for, whole_number
 
 #: what ``--quick`` stands for (see assistant.cli.eval): one clean sentence of each kind
 QUICK = ("--per-kind", "1", "--clean-only")
@@ -14,7 +14,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--asr", choices=("pocketsphinx", "vosk"), default="pocketsphinx",
                         help="recogniser to measure (default pocketsphinx)")
     parser.add_argument("--asr-model", metavar="DIR", help="the vosk model folder (with --asr vosk)")
-    parser.add_argument("--per-kind", type=int, metavar="N",
+    parser.add_argument("--per-kind", type=whole_number(1, 10**6), metavar="N",
                         help="only the first N sentences of each kind (4: 36 utterances with the noise levels)")
     parser.add_argument("--all-voices", action="store_true",
                         help="every sentence in every voice and rate (8x longer); default: in rotation")

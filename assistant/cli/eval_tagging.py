@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from assistant.cli.common import emit_json, percent, print_table, progress_for, show_report
+from assistant.cli.common import emit_json, percent, print_table, progress_for, show_report, whole_number
 
 #: what ``--quick`` stands for (see assistant.cli.eval): two-fold cross-validation on our corpus, no real test files
 QUICK = ("--folds", "2", "--no-test")
@@ -22,7 +22,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="skip experiment (b): only cross-validate on the training corpus")
     parser.add_argument("--folds", type=int, default=10,
                         help="cross-validation folds on the training corpus (0 to skip; default 10)")
-    parser.add_argument("--top", type=int, default=8, help="confusions to list per set (default 8)")
+    parser.add_argument("--top", type=whole_number(0, 1000), default=8, help="confusions to list per set (default 8)")
     parser.add_argument("--consistency", action="append", metavar="PATH",
                         help="instead of (a)/(b): measure how consistent the annotation of PATH is "
                              "with itself (context-majority ceilings, repeated n-grams, identical "

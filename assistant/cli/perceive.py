@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 import math
 
-from assistant.cli.common import add_json_flag, emit_json, finite_float, parse_pose, print_table, run_batch
+from assistant.cli.common import (add_json_flag, emit_json, finite_float, parse_pose, print_table,
+                                  run_batch, whole_number)
 
 
 def _numbers(count: int, what: str):
@@ -50,7 +51,8 @@ def register(subparsers) -> None:
     replay.add_argument("--replay", metavar="FILE",
                         help="a recording (assistant record's .mcap, a ROS bag, a TUM RGB-D folder): "
                              "detections in every frame, in the world (odometry) frame")
-    replay.add_argument("--frame", type=int, metavar="N", help="with --replay: only frame N (0 = the first)")
+    replay.add_argument("--frame", type=whole_number(0, 10**9), metavar="N",
+                        help="with --replay: only frame N (0 = the first)")
     replay.add_argument("--at", type=finite_float, metavar="SECONDS",
                         help="with --replay: only the frame in view SECONDS after the recording starts")
     parser.add_argument("--orientation", default="plane", choices=("plane", "linear"),

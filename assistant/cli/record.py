@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import argparse
 
-from assistant.cli.common import add_json_flag, emit_json, finite_float, out_file
+from assistant.cli.common import add_json_flag, emit_json, finite_float, out_file, seed_int
 
 
 #: smallest --step-deg: 360 frames in one turn (0.0001° asked for 3.6 million and never ended)
@@ -33,7 +33,7 @@ def register(subparsers) -> None:
     parser.add_argument("--scene", default="original", help="scene: original or modified (default: original)")
     parser.add_argument("--perception", choices=("sensed", "oracle"), default="sensed",
                         help="furniture perception for --fetch (default: sensed)")
-    parser.add_argument("--seed", type=int, default=0, help="simulator seed (default 0)")
+    parser.add_argument("--seed", type=seed_int, default=0, help="simulator seed (default 0)")
     parser.add_argument("--step-deg", type=finite_float, default=30.0, metavar="DEG",
                         help="looking around: a frame every DEG degrees of the turn (default 30)")
     parser.add_argument("--turn-rate", type=finite_float, default=0.4, metavar="RAD_S",

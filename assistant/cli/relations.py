@@ -9,6 +9,7 @@ pose as the viewer.
 from __future__ import annotations
 
 import argparse
+import math
 
 from assistant.cli.common import add_json_flag, emit_json, finite_float, print_table, run_batch
 
@@ -45,6 +46,11 @@ def _answer(world_name: str, scene: str, reference: str | None, resolution: floa
 
     if not MIN_RESOLUTION_M <= resolution <= 1.0:
         raise AssistantError(f"--resolution must be from {MIN_RESOLUTION_M} to 1 metre, got {resolution}")
+    if viewer is not None:
+        viewer = float(viewer)
+        if not math.isfinite(viewer):
+            raise AssistantError(f"the viewer heading must be a finite number of radians, got {viewer}")
+        viewer = math.remainder(viewer, 2 * math.pi)  # any turn count: the same heading in (-π, π]
     world = load_world(world_name)
     sc = world.scene(scene)
     if reference is not None:
@@ -75,7 +81,8 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         emit_json(data)
         return 0
-    print(f"{data['world']} ({data['scene']} scene); tables are seen from the start heading "
+    whose = "the start heading" if args.viewer is None else "the viewer heading"
+    print(f"{data['world']} ({data['scene']} scene); tables are seen from {whose} "
           f"{data['viewer_heading']:.2f} rad")
     room = None
     rows: list[list] = []

@@ -23,7 +23,12 @@ __all__ = ["StatusLine", "TICK_S", "status_text"]
 #: how often the status line is redrawn (its clock shows whole seconds)
 TICK_S = 1.0
 
-_SAVE, _RESTORE, _UP, _CLEAR = "\0337", "\0338", "\033[A", "\r\033[K"
+_SAVE, _RESTORE, _UP, _CLEAR, _CLEAR_BELOW = "\0337", "\0338", "\033[A", "\r\033[K", "\033[J"
+
+
+def _up(rows: int) -> str:
+    """The cursor ``rows`` rows up (its column kept)."""
+    return _UP if rows == 1 else f"\033[{rows}A"
 
 
 def status_text(doing: str, seconds: float, width: int = 200) -> str:
@@ -45,9 +50,10 @@ class StatusLine:
     """
 
     def __init__(self, out, lock, prompt: str, activity: Callable[[], tuple[str, float] | None],
-                 at_prompt: Callable[[], bool], typed: Callable[[], str] = lambda: ""):
+                 at_prompt: Callable[[], bool], typed: Callable[[], str] = lambda: "",
+                 columns: Callable[[], int] = lambda: shutil.get_terminal_size((200, 40)).columns):
         self.out, self.lock, self.prompt = out, lock, prompt
-        self.activity, self.at_prompt, self.typed = activity, at_prompt, typed
+        self.activity, self.at_prompt, self.typed, self.columns = activity, at_prompt, typed, columns
         self.drawn = False
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -58,11 +64,11 @@ class StatusLine:
             now = self.activity()
             if now is None or not self.at_prompt():
                 return False
-            text = status_text(*now, width=shutil.get_terminal_size((200, 40)).columns)
+            text = status_text(*now, width=self.columns())
             if self.drawn:  # rewrite the line above the prompt, the cursor back where it was
-                self.out.write(_SAVE + _UP + _CLEAR + text + _RESTORE)
+                self.out.write(_SAVE + _up(self._rows_above_cursor() + 1) + _CLEAR + text + _RESTORE)
             else:  # take the prompt's line, the prompt and what was typed one line down
-                self.out.write(_CLEAR + text + "\n" + self.prompt + self.typed())
+                self.out.write(self._clear_prompt() + text + "\n" + self.prompt + self.typed())
                 self.drawn = True
             self.out.flush()
             return True
@@ -71,9 +77,23 @@ class StatusLine:
         """What to write (under ``lock``) before printing a line above the prompt: the cursor to
         the start of the status line when it is drawn, else to the start of the prompt's line."""
         if not self.drawn:
-            return _CLEAR
+            return self._clear_prompt()
         self.drawn = False
-        return _CLEAR + _UP + _CLEAR
+        rows = self._rows_above_cursor()
+        return _CLEAR + _UP + _CLEAR if rows == 0 else "\r" + _up(rows + 1) + _CLEAR_BELOW
+
+    def _clear_prompt(self) -> str:
+        """The cursor to the start of the prompt's first row, that row and any it wraps onto
+        cleared."""
+        rows = self._rows_above_cursor()
+        return _CLEAR if rows == 0 else "\r" + _up(rows) + _CLEAR_BELOW
+
+    def _rows_above_cursor(self) -> int:
+        """Screen rows of the prompt's line above the cursor: a typed line longer than the
+        terminal is wide wraps, and the status line is that many rows higher (the cursor is
+        taken to be at the end of what was typed; a full row keeps it on that row)."""
+        used = len(self.prompt) + len(self.typed())
+        return max(0, used - 1) // max(1, self.columns())
 
     def left_prompt(self) -> None:
         """A typed line ended: the status line (if drawn) is no longer just above the prompt."""

@@ -381,7 +381,12 @@ def _gap_m(a: np.ndarray, b: np.ndarray, within_m: float) -> float:
     apart = np.maximum(a.min(axis=0) - b.max(axis=0), b.min(axis=0) - a.max(axis=0))
     if float(np.hypot(*np.maximum(apart, 0.0))) > within_m:
         return math.inf
-    return float(np.min(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2)))
+    dx = a[:, 0, None] - b[None, :, 0]
+    dy = a[:, 1, None] - b[None, :, 1]
+    dx *= dx
+    dy *= dy
+    dx += dy  # the squared distances as ``np.linalg.norm`` sums them, without its (M, K, 2) copy
+    return math.sqrt(float(dx.min()))  # the least root is the root of the least square
 
 
 def _has_furniture_surface(shape: np.ndarray, tall_m: float, min_share: float) -> bool:

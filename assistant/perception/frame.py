@@ -14,6 +14,7 @@ compares them with the code before these changes (``benchmarks/perception_refere
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass, field
 
@@ -38,7 +39,8 @@ class FrameParams:
     (:func:`assistant.runtime.limit_openmp_threads`), but when open3d is loaded first it used
     both cores: measured on the loaded 2-core machine, 56 ms of CPU per simulated frame instead
     of 18 ms; numpy's two BLAS threads doubled the real frames' CPU time (32 → 58 ms;
-    ``bench_perception.py --threads``)."""
+    ``bench_perception.py --threads``). Until 2 Dec evening the limit did not reach open3d at
+    all in a process without the variable (a notebook, the benchmark): see :func:`thread_limit`."""
 
     target_width: int = 320
     max_range_m: float = 6.0
@@ -91,7 +93,17 @@ _CONTROLLER: list = []
 def thread_limit(threads: int = 1):
     """Context limiting the process's OpenMP (open3d) and BLAS (numpy, scipy) thread pools to
     ``threads`` (threadpoolctl; about 20 µs to enter and leave). On the shared 2-core machine
-    one thread is faster: a second one mostly waits for a core the other jobs hold."""
+    one thread is faster: a second one mostly waits for a core the other jobs hold.
+
+    open3d (0.19) sizes each parallel loop with ``utility::EstimateMaxThreads()``, which reads
+    the OpenMP setting (``omp_get_max_threads``, what threadpoolctl changes) only when the
+    ``OMP_NUM_THREADS`` variable is set at the time of the call, and otherwise takes the
+    machine's core count: without the variable the limit did not reach open3d's normal
+    estimation (2 threads; measured 8 ms median CPU for a 1500-point sample instead of 2.7 ms
+    on the loaded machine, ``docs/perception.md``). So when the variable is unset this sets it,
+    to the OpenMP thread count the process has now: nothing changes outside the limit (open3d
+    gets the OpenMP count instead of the core count, the same on this machine), and inside it
+    open3d obeys."""
     if not _CONTROLLER:
         import importlib
 
@@ -99,7 +111,11 @@ def thread_limit(threads: int = 1):
 
         importlib.import_module("open3d")  # its OpenMP runtime must be loaded to be found
 
-        _CONTROLLER.append(ThreadpoolController())
+        controller = ThreadpoolController()
+        if "OMP_NUM_THREADS" not in os.environ:
+            counts = [info["num_threads"] for info in controller.info() if info["user_api"] == "openmp"]
+            os.environ["OMP_NUM_THREADS"] = str(max(counts, default=os.cpu_count() or 1))
+        _CONTROLLER.append(controller)
     return _CONTROLLER[0].limit(limits=threads)
 
 

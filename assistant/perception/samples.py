@@ -23,6 +23,7 @@ Each sample is voxel-downsampled (open3d).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -431,10 +432,17 @@ def _with_wall_remains(cleared: np.ndarray, occupied: np.ndarray, flat: np.ndarr
 def _is_wall_piece(points: np.ndarray, p: SampleParams) -> bool:
     """A thin, long vertical sheet reaching above 1.2 m: a piece of wall, not furniture.
 
-    The cheap test (thickness across the principal axis) runs first; the percentiles only for
-    the thin samples that can still be walls.
+    Cheapest first: a sample whose highest point is not above 1.2 m (its 98th percentile cannot
+    be) or whose floor-plan bounding box has a diagonal no longer than ``wall_length_m`` (no
+    extent along any axis can be longer) is not a wall piece — most furniture samples, decided
+    without the principal axes; then the thickness across the principal axis, and the
+    percentiles only for the thin samples that can still be walls.
     """
     if len(points) < 10:
+        return False
+    if not points[:, 2].max() > 1.2 - 1e-9:  # (margins: rounding in the tests below)
+        return False
+    if not math.hypot(*np.ptp(points[:, :2], axis=0)) > p.wall_length_m - 1e-9:
         return False
     xy = points[:, :2] - points[:, :2].mean(axis=0)
     a, b = xy[:, 0], xy[:, 1]

@@ -233,3 +233,24 @@ def test_a_where_request_naming_a_list_is_refused_not_searched_for(tmp_path, cap
     code, out, err = run(["where", "--batch", str(batch), "--json"], capsys)
     answers = [json.loads(line) for line in out.splitlines()]
     assert code == 0 and len(answers) == 2 and all("are names, as text" in a["error"] for a in answers)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["eval", "grounding", "--rounds", "-1"], "from 0 to 1000, got -1"),
+    (["eval", "grounding", "--seed", "-3"], "a seed is from 0"),
+    (["eval", "fetch", "--limit", "0"], "got 0"),
+    (["eval", "policy", "--trials", "two"], "expected a whole number, got 'two'"),
+    (["eval", "speech", "--per-kind", "-4"], "got -4"),
+])
+def test_counts_that_mean_nothing_are_refused_before_any_work(argv, words, capsys):
+    code, out, err = run(argv, capsys)
+    assert code == 2 and words in err.strip().splitlines()[-1], err
+
+
+def test_a_viewer_heading_of_many_turns_is_the_same_heading_without_overflow(capsys, recwarn):
+    code, out, err = run(["relations", "--world", "apartment", "--viewer", "1e300", "--json"], capsys)
+    heading = json.loads(out)["viewer_heading"]
+    assert code == 0 and -np.pi <= heading <= np.pi and not [w for w in recwarn if "overflow" in str(w.message)]
+    code, out, err = run(["relations", "--world", "apartment", "--viewer", str(0.5 + 4 * np.pi), "--json"],
+                         capsys)
+    assert code == 0 and json.loads(out)["viewer_heading"] == pytest.approx(0.5)

@@ -59,3 +59,18 @@ def test_the_status_text_fits_the_terminal_width():
     assert status_text("looking around the living room", 3601.0) == \
         "(looking around the living room … 60:01 — \"stop\" stops me)"
     assert len(status_text("looking around the living room", 5.0, width=20)) < 20
+
+
+def test_a_typed_line_wider_than_the_terminal_moves_the_status_line_up_by_its_rows():
+    out = io.StringIO()
+    typed = "x" * 40  # "you> " + 40 characters on a 20-column terminal: rows 0, 1 and 2 (cursor)
+    status = StatusLine(out, threading.RLock(), PROMPT, lambda: ("looking for your mug", 2.0),
+                        lambda: True, lambda: typed, columns=lambda: 20)
+    status.tick()
+    first = out.getvalue()
+    assert first.startswith("\r\033[2A\033[J(")  # the wrapped rows cleared, not only the last one
+    status.tick()
+    assert out.getvalue()[len(first):].startswith("\0337\033[3A\r\033[K(")  # above all three rows
+    assert status.erase() == "\r\033[3A\033[J"
+    typed = "x" * 15  # exactly one full row: the cursor waits at its end, no wrap yet
+    assert status.erase() == "\r\033[K"

@@ -118,3 +118,8 @@ def test_the_gaussian_svms_decision_values_come_from_one_matrix_product_as_sciki
     assert RBFDecision.of(FurnitureClassifier("lsvm").fit(*toy(n=5)).estimator_) is None
     two = FurnitureClassifier("gsvm").fit(*toy(n=5))
     assert RBFDecision.of(two.estimator_) is None  # two classes: scikit-learn's own values
+    import copy
+
+    moved = copy.deepcopy(clf.estimator_)
+    del moved.steps[1][1]._gamma  # a scikit-learn without the private gamma: its own values
+    assert RBFDecision.of(moved) is None

@@ -73,3 +73,38 @@ def test_a_remembered_floor_is_reused_and_a_stale_one_falls_back_to_the_search()
     higher = depth_to_points(floor_depth(1.65, 8.0, roll_deg=5.0), K, stride=1)[0]
     moved = find_floor(higher, None, previous=searched)
     assert moved.height_m == pytest.approx(1.65, abs=0.03)
+
+
+
+def _assert_two_rounds_pick_the_full_scorings_plane(pts: np.ndarray) -> None:
+    from assistant.perception import cloud
+
+    sub = pts[:: max(1, len(pts) // cloud.SEARCH_POINTS)]
+    for seed in range(4):
+        normals, d = cloud._floor_hypotheses(sub, seed)
+        full = cloud._support_scores(sub, normals, d)
+        assert cloud._best_supported(sub, normals, d) == (int(np.argmax(full)), int(full.max()))
+
+
+def test_the_two_round_plane_scoring_picks_the_plane_full_scoring_picks():
+    """Issue 20 (speed): ``_best_supported`` scores every floor hypothesis on a quarter of the
+    points and only the best few on all of them: on a floor with a bed-high slab in front, the
+    winner and its score are those of scoring every hypothesis on every point."""
+    rng = np.random.default_rng(3)
+    depth = floor_depth(1.2, 20.0, roll_deg=4.0)
+    depth[40:90, 30:110] = np.minimum(depth[40:90, 30:110], 2.0)  # a slab nearer than the floor
+    depth += rng.normal(0, 0.01, depth.shape).astype(np.float32) * (depth > 0)
+    pts, _ = depth_to_points(depth, K, stride=1)
+    _assert_two_rounds_pick_the_full_scorings_plane(pts)
+
+
+def test_the_two_round_plane_scoring_on_the_real_frames(shared_dir):
+    """The same on every real frame's cloud (as the frame reads it: every second pixel)."""
+    from assistant.perception.realdata import load_frames
+
+    root = shared_dir / "realdata"
+    if not root.is_dir():
+        pytest.skip("no ../shared/realdata")
+    for _, _, frame in load_frames(root):
+        pts, _ = depth_to_points(frame.depth_m, frame.intrinsics, 2)
+        _assert_two_rounds_pick_the_full_scorings_plane(pts)

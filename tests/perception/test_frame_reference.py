@@ -239,3 +239,26 @@ def test_one_thread_while_a_frame_is_analysed_and_the_process_setting_back_after
     assert set(seen[0].values()) == {1}  # every OpenMP and BLAS pool
     assert seen[1] == before
     assert {(i["internal_api"], i["filepath"]): i["num_threads"] for i in threadpool_info()} == before
+
+
+def test_the_thread_limit_sets_omp_num_threads_so_that_open3d_obeys_it(monkeypatch):
+    """open3d 0.19 sizes its parallel loops by the OpenMP setting only when ``OMP_NUM_THREADS``
+    is set (else by the core count), so a process without the variable (a notebook, the
+    benchmark) had its limit ignored by open3d's normals: the limit sets the variable, to the
+    OpenMP thread count the process has (nothing changes outside the limit), and leaves a set
+    one alone."""
+    import os
+
+    from threadpoolctl import threadpool_info
+
+    from assistant.perception import frame as frame_module
+
+    openmp = max(i["num_threads"] for i in threadpool_info() if i["user_api"] == "openmp")
+    monkeypatch.delenv("OMP_NUM_THREADS", raising=False)
+    monkeypatch.setattr(frame_module, "_CONTROLLER", [])
+    with frame_module.thread_limit(1):
+        assert os.environ["OMP_NUM_THREADS"] == str(openmp)
+    monkeypatch.setenv("OMP_NUM_THREADS", "3")
+    monkeypatch.setattr(frame_module, "_CONTROLLER", [])
+    with frame_module.thread_limit(1):
+        assert os.environ["OMP_NUM_THREADS"] == "3"

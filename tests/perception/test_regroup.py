@@ -5,6 +5,8 @@ when the classifier reads it as a small table."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from assistant.perception.features import side_cues
@@ -145,3 +147,18 @@ def test_a_beds_foot_end_joined_across_its_shadow_and_cut_by_the_range_is_an_uns
     assert bed.confidence == 0.12
     found, unknown = detector._detections([_foot_end(False)], [("couch+side", 0.88)], camera, None)
     assert found == [] and [u.why for u in unknown] == ["disputed"]
+
+
+def test_the_gap_between_cell_sets_is_the_least_pairwise_distance():
+    """``detector._gap_m`` (the night-stand rule's distance from a stand's cells to a bed's) is
+    the least Euclidean distance of all pairs, bit for bit as ``np.linalg.norm`` gives it, and
+    ``inf`` when the bounding boxes lie farther apart than asked."""
+    from assistant.perception.detector import _gap_m
+
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        a = rng.normal(0, 1, (int(rng.integers(1, 400)), 2))
+        b = rng.normal(0.5, 1, (int(rng.integers(1, 40)), 2))
+        want = float(np.min(np.linalg.norm(a[:, None, :] - b[None, :, :], axis=2)))
+        assert _gap_m(a, b, 100.0) == want
+    assert _gap_m(np.zeros((3, 2)), np.full((2, 2), 5.0), 1.0) == math.inf

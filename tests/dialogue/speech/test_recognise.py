@@ -133,3 +133,25 @@ def test_the_home_served_decides_between_near_room_names():
     assert in_flat.transcript.endswith("from the living room"), in_flat.transcript
     assert "meeting room" in in_studio.transcript and "meeting room" in anywhere.transcript, (in_studio, anywhere)
     assert in_flat.search == "home" and len(in_flat.words) == len(in_flat.transcript.split())
+
+
+def test_stop_inside_a_longer_sentence_is_not_taken_for_a_stop_request():
+    """The keyphrase search alone fires on "laptop" ("… lap-top …"); a stop request ends a short
+    stretch of speech (here "laptop" comes 1.9 s into it), so the spotter reports it only then — and still hears a "stop" said after
+    the sentence and a pause (benchmarks/bench_barge_in.py measures both on many utterances)."""
+    from assistant.dialogue.speech.keyword import KeywordSpotter
+
+    rng = np.random.default_rng(2)
+    sentence = speak("go to the living room, the laptop is on the big table between the two chairs", rate=175)
+    stop = speak("stop", rate=175)
+    x = np.concatenate([sentence, np.zeros(8000, np.float32), stop])
+    x = x + rng.normal(0, 3e-3, len(x)).astype(np.float32)
+
+    def heard(spotter, audio):
+        return [spotter.heard_s for i in range(0, len(audio), 480) if spotter.feed(audio[i:i + 480])]
+
+    bare = KeywordSpotter("stop", max_run_s=None)
+    assert heard(bare, x[:len(sentence)])  # the search alone is fooled by the sentence
+    spotter = KeywordSpotter("stop")
+    times = heard(spotter, x)
+    assert spotter.ignored >= 1 and len(times) == 1 and times[0] > len(sentence) / 16000
