@@ -155,3 +155,19 @@ def test_stop_inside_a_longer_sentence_is_not_taken_for_a_stop_request():
     spotter = KeywordSpotter("stop")
     times = heard(spotter, x)
     assert spotter.ignored >= 1 and len(times) == 1 and times[0] > len(sentence) / 16000
+
+
+def test_rooms_and_furniture_no_home_has_are_heard_as_said(recogniser):
+    """People name rooms and furniture the homes lack; heard as said, the robot can answer that
+    this home has no kitchen, or ask what a cupboard is, instead of acting on other words."""
+    said = "get the mug from the cupboard in the kitchen"
+    heard = recogniser.recognise(speak(said, rate=160)).transcript
+    assert "cupboard" in heard.split() and "kitchen" in heard.split(), heard
+
+
+def test_the_homes_own_words_weigh_more_than_everyday_ones():
+    from assistant.dialogue.speech.vocabulary import build_vocabulary
+
+    words = [w for s in build_vocabulary().sentences for w in s.split()]
+    assert words.count("bedroom") > 5 * words.count("bathroom") > 0
+    assert words.count("dresser") > 5 * words.count("wardrobe") > 0
