@@ -24,6 +24,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-open", action="store_true", help="pocketsphinx: no general-English fallback")
     parser.add_argument("--no-home", action="store_true",
                         help="do not tell the recogniser each utterance's home (its rooms win near n-best ties)")
+    parser.add_argument("--no-vtln", action="store_true",
+                        help="pocketsphinx: no vocal tract length normalisation (no warp to the voice's pitch)")
     parser.add_argument("--rows", action="store_true", help="print every utterance")
     parser.add_argument("--shard", metavar="I/N", default="1/1",
                         help="only every N-th utterance from the I-th: run N processes in parallel, each "
@@ -45,7 +47,7 @@ def run(args: argparse.Namespace) -> int:
         report = evaluate_speech(args.asr, args.asr_model, per_kind=args.per_kind, all_voices=args.all_voices,
                                  kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
                                  open_fallback=not args.no_open, shard=_shard(args.shard),
-                                 home=not args.no_home, progress=progress_for(args))
+                                 home=not args.no_home, vtln=not args.no_vtln, progress=progress_for(args))
     if args.json:
         emit_json(report)
         return 0

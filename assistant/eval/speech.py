@@ -61,11 +61,13 @@ class _Parsers:
 
 def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int | None = None, all_voices: bool = False,
                     kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
-                    shard: tuple[int, int] = (1, 1), home: bool = True, progress: Progress = no_progress) -> dict:
+                    shard: tuple[int, int] = (1, 1), home: bool = True, vtln: bool = True,
+                    progress: Progress = no_progress) -> dict:
     """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor).
     ``shard`` (i, n): only every n-th utterance from the i-th (1-based), to run in parallel
     processes; :func:`merge_reports` joins their reports. ``home``: tell the recogniser each
-    utterance's home (:meth:`~assistant.dialogue.speech.recogniser.Recogniser.use_home`)."""
+    utterance's home (:meth:`~assistant.dialogue.speech.recogniser.Recogniser.use_home`). ``vtln``
+    (pocketsphinx): warp the front end to each voice's pitch (:mod:`~assistant.dialogue.speech.vtln`)."""
     from assistant.dialogue import classify
     from assistant.dialogue.speech.listener import DEFAULT_CONFIRM_BELOW
     from assistant.dialogue.speech.recogniser import make_recogniser
@@ -73,6 +75,8 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
 
     wall = time.perf_counter()
     options = {"asr_model": asr_model} if asr_model else {"open_fallback": open_fallback}
+    if engine == "pocketsphinx":
+        options["vtln"] = vtln
     progress(f"loading the {engine} recogniser")
     recogniser = make_recogniser(engine, **options)
     if engine == "pocketsphinx" and open_fallback:
@@ -92,7 +96,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
         row = {"id": item.id, "kind": item.kind, "world": item.world, "voice": item.voice, "rate": item.rate,
                "noise": item.noise, "engine": engine, "reference": ref, "transcript": heard.transcript,
                "words": len(ref.split()), "errors": word_errors(ref, heard.transcript),
-               "confidence": round(heard.confidence, 3), "search": heard.search,
+               "confidence": round(heard.confidence, 3), "search": heard.search, "warp": heard.warp,
                "audio_s": round(heard.audio_s, 3), "decode_s": round(heard.decode_s, 4),
                "intent_equal": classify(heard.transcript).name == classify(item.text).name,
                "plan_equal": None, "would_confirm": heard.confidence < threshold}
@@ -102,7 +106,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
         rows.append(row)
     recogniser.close()
     head = {"engine": engine, "recogniser": recogniser.describe(), "per_kind": per_kind, "all_voices": all_voices,
-            "confirm_below": threshold, "home": home, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
+            "confirm_below": threshold, "home": home, "vtln": vtln, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
     return report_of(rows, head)
 
 

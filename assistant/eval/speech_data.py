@@ -2,7 +2,8 @@
 
 Sentences (all from the repository, none in the recogniser's model text):
 
-* ``command`` — the fetch dev set (``corpus/fetch_dev.jsonl``, 128 commands);
+* ``command`` — the fetch dev set's commands (``corpus/fetch_dev.jsonl``), each (text, home) once: the
+  dev set repeats commands in other scenes, seeds and robots (186 lines, 98 commands on 2 Dec);
 * ``where`` — "where is my X" questions in five wordings over the homes' objects and a few
   objects the robot does not know ("where is my wallet");
 * ``chat`` — the words people say in the dialogue scripts (``corpus/dialogues/*.yaml``), less
@@ -78,7 +79,9 @@ def sentences(repo: Path | None = None) -> list[tuple[str, str, str]]:
     for line in (repo / "corpus" / "fetch_dev.jsonl").read_text(encoding="utf-8").splitlines():
         if line.strip():
             request = json.loads(line)
-            out.append((request["text"], "command", request.get("world", "apartment")))
+            sentence = (request["text"], "command", request.get("world", "apartment"))
+            if sentence not in out:  # the dev set repeats a command in other scenes and seeds: one is enough
+                out.append(sentence)
     objects = ("mug", "fork", "laptop", "monitor", "statue", "glasses case") + UNKNOWN_OBJECTS
     for i, obj in enumerate(objects):
         for j, wording in enumerate(WHERE_WORDINGS):

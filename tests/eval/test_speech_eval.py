@@ -36,8 +36,12 @@ def test_sentences_and_rotation_cover_kinds_voices_rates():
     kinds = {k for _, k, _ in said}
     from assistant.language.corpus import repo_root
 
-    dev = [line for line in (repo_root() / "corpus" / "fetch_dev.jsonl").read_text().splitlines() if line.strip()]
-    assert kinds == {"command", "where", "chat"} and sum(k == "command" for _, k, _ in said) == len(dev)
+    dev = [json.loads(line) for line in (repo_root() / "corpus" / "fetch_dev.jsonl").read_text().splitlines()
+           if line.strip()]
+    distinct = {(d["text"], d.get("world", "apartment")) for d in dev}
+    assert len(distinct) < len(dev)  # the dev set repeats commands in other scenes and seeds
+    assert kinds == {"command", "where", "chat"} and sum(k == "command" for _, k, _ in said) == len(distinct)
+    assert len(set(said)) == len(said)  # each sentence once
     assert not any(t.strip() in ("asdfgh", "blorp zing wibble") for t, _, _ in said)  # garbled turns left out
     all_items = items(snrs_db=(None,))
     assert {(i.voice, i.rate) for i in all_items} == {(v, r) for v in ("en-us", "en-us+f3", "en-us+m3", "en-us-nyc")
@@ -67,3 +71,8 @@ def test_quick_evaluation_of_where_questions_gives_rows_and_groups():
     row = report["rows"][0]
     assert row["plan_equal"] in (True, False) and row["decode_s"] > 0 and row["reference"] == "where is my mug"
     json.dumps(report)  # the --json output is plain JSON
+    # the voices rotate: en-us (a man's pitch) is not warped, en-us+f3 (a woman's) is
+    warps = {r["voice"]: r["warp"] for r in report["rows"]}
+    assert report["vtln"] and report["recogniser"]["vtln"] and warps["en-us"] == 1.0 and warps["en-us+f3"] > 1.0
+    plain = evaluate_speech(per_kind=2, kinds=["where"], snrs_db=(None,), open_fallback=False, vtln=False)
+    assert not plain["vtln"] and {r["warp"] for r in plain["rows"]} == {1.0}

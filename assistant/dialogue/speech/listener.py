@@ -49,7 +49,7 @@ class Heard:
                            "speech_end_s": round(self.speech_end_s, 3),
                            "decode_s": round(self.recognition.decode_s, 4),
                            "real_time_factor": round(self.recognition.real_time_factor, 3)},
-                "engine": self.recognition.engine, "search": self.recognition.search,
+                "engine": self.recognition.engine, "search": self.recognition.search, "warp": self.recognition.warp,
                 "words": self.recognition.to_dict()["words"],
                 "audio": {"file": self.source, "rate_hz": self.source_rate_hz, "channels": self.source_channels}}
 

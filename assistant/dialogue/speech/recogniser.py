@@ -30,7 +30,9 @@ class Recognition:
     ``transcript``: lower-case words; ``confidence``: 0 … 1 (the engine's word posteriors);
     ``audio_s``: the utterance's length; ``decode_s``: wall-clock decoding time; ``engine``;
     ``search``: which model produced the words (``home``: the home's language model,
-    ``open``: the general fallback); ``words``: [(word, start_s, end_s, confidence)].
+    ``open``: the general fallback); ``words``: [(word, start_s, end_s, confidence)];
+    ``warp``: the front end's frequency warp for the voice (vocal tract length normalisation,
+    pocketsphinx; 1: none).
     """
 
     transcript: str
@@ -40,6 +42,7 @@ class Recognition:
     engine: str
     search: str = "home"
     words: list = field(default_factory=list)
+    warp: float = 1.0
 
     @property
     def real_time_factor(self) -> float:

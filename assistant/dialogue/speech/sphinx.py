@@ -23,6 +23,13 @@ hypotheses of its n-best list whose score is within ``home_margin`` are tried, a
 naming only rooms the home has, and differing from the best words in at most ``ROOM_EDITS`` words,
 is taken. Words outside every home (open vocabulary) are never
 penalised: only room names known from some home count.
+
+The front end is fitted to the voice (``vtln``, :mod:`~assistant.dialogue.speech.vtln`): a voice
+pitched above men's average (most women, children) is decoded with its frequency axis warped
+back towards the male-dominated acoustic model's. A whole utterance is warped by its own pitch; a
+stream, decoded while the person talks, by the pitch of its first second (:class:`SphinxStream`),
+or of the conversation's earlier utterances when that holds too little voice
+(:attr:`PocketsphinxRecogniser.speaker`).
 """
 
 from __future__ import annotations
@@ -35,6 +42,7 @@ import numpy as np
 from assistant.dialogue.speech.audio import active_power, frame_energies, to_pcm16, with_noise_floor
 from assistant.dialogue.speech.errors import RecogniserError, require
 from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
+from assistant.dialogue.speech.vtln import SpeakerPitch, pitch_hz, warp_for_pitch
 
 #: decoder settings: pocketsphinx's language weights, wider beams than its defaults (fewer word
 #: errors in development, docs/speech.md), dither with a fixed seed
@@ -52,6 +60,8 @@ DEFAULT_HOME_MARGIN = 0.05
 #: at most this many words may differ from the best words (the room's name: "meeting" → "living"),
 #: so that a hypothesis rewriting the rest of the sentence is not taken for its room
 ROOM_EDITS = 2
+#: a stream holds this much audio (s) before choosing its warp from the voice's pitch
+VTLN_HOLD_S = 1.0
 
 
 class PocketsphinxRecogniser(Recogniser):
@@ -61,14 +71,16 @@ class PocketsphinxRecogniser(Recogniser):
     hypothesis naming the home's room may score and still win; ``open_fallback``:
     use the general model when unsure; ``open_below``: the confidence under which it is tried;
     ``open_margin``: how much more confident its words must be to be taken; ``floor_db``: the
-    noise floor added before decoding (dB under the speech, None: none).
+    noise floor added before decoding (dB under the speech, None: none); ``vtln``: warp the front
+    end to the voice's pitch (:mod:`~assistant.dialogue.speech.vtln`).
     """
 
     name = "pocketsphinx"
 
     def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.3,
                  open_margin: float = 0.3, settings: dict | None = None, asr_model=None,
-                 floor_db: float | None = DEFAULT_FLOOR_DB, home_margin: float = DEFAULT_HOME_MARGIN):
+                 floor_db: float | None = DEFAULT_FLOOR_DB, home_margin: float = DEFAULT_HOME_MARGIN,
+                 vtln: bool = True):
         if asr_model is not None:
             raise RecogniserError("pocketsphinx uses its packaged en-US model; --asr-model is for --asr vosk")
         ps = require("pocketsphinx", "pip install pocketsphinx", RecogniserError)
@@ -81,8 +93,12 @@ class PocketsphinxRecogniser(Recogniser):
         except (RuntimeError, ValueError) as error:
             raise RecogniserError(f"pocketsphinx cannot load the home model {self.model.lm} ({error}); "
                                   "delete it to rebuild it") from None
+        self._home_front = WarpedFrontEnd(self._home)
         self.floor_db = floor_db
         self.home_margin = home_margin
+        self.vtln = vtln
+        self.speaker = SpeakerPitch()  # the voice heard so far in this conversation
+        self._known_rooms: frozenset[str] | None = None  # of every home: read when a home is first given
         self._rooms: frozenset[str] = frozenset()  # the home's rooms
         self._foreign: tuple[str, ...] = ()  # rooms of other homes (not of this one)
         self.use_home(world)
@@ -90,6 +106,7 @@ class PocketsphinxRecogniser(Recogniser):
         self.open_below = open_below
         self.open_margin = open_margin
         self._open = None
+        self._open_front = None
         self._open_lock = threading.Lock()
         self._open_error: str | None = None
         self._loader = None
@@ -107,9 +124,9 @@ class PocketsphinxRecogniser(Recogniser):
         if world is None:
             self._rooms, self._foreign = frozenset(), ()
             return
-        from assistant.dialogue.speech.vocabulary import home_words
+        if self._known_rooms is None:
+            from assistant.dialogue.speech.vocabulary import home_words
 
-        if not hasattr(self, "_known_rooms"):
             self._known_rooms = frozenset(home_words()["rooms"])
         self._rooms = frozenset(world.floorplan.room_names)
         self._foreign = tuple(sorted(self._known_rooms - self._rooms))
@@ -122,6 +139,7 @@ class PocketsphinxRecogniser(Recogniser):
 
                 try:
                     self._open = ps.Decoder(**self.settings)
+                    self._open_front = WarpedFrontEnd(self._open)
                 except (RuntimeError, ValueError) as error:  # the packaged model is damaged
                     self._open_error = str(error)
             return self._open
@@ -129,18 +147,27 @@ class PocketsphinxRecogniser(Recogniser):
     def describe(self) -> dict:
         return {"engine": self.name, "home_lm": str(self.model.lm), "home_words": self.model.words,
                 "open_fallback": self.open_fallback, "open_below": self.open_below, "floor_db": self.floor_db,
-                "home_margin": self.home_margin, "home_rooms": sorted(self._rooms),
+                "home_margin": self.home_margin, "home_rooms": sorted(self._rooms), "vtln": self.vtln,
                 "settings": {k: v for k, v in self.settings.items() if k != "loglevel"}}
 
     # ------------------------------------------------------------------ decoding
     def recognise(self, samples: np.ndarray) -> Recognition:
         samples = np.asarray(samples, dtype=np.float32)
         start = time.perf_counter()
+        warp = 1.0
+        if self.vtln:  # the utterance's own pitch; the conversation's when it has too little voice
+            f0 = self.speaker.add(samples)
+            warp = warp_for_pitch(self.speaker.hz if f0 is None else f0)
         if self.floor_db is not None:
             samples = with_noise_floor(samples, self.floor_db)
         pcm = to_pcm16(samples)
+        self._home_front.use(warp, fresh=True)
         _decode(self._home, pcm)
-        return self._choose(self._home_words(), pcm, start)
+        return self._choose(self._home_words(), pcm, start, warp)
+
+    def speaker_warp(self) -> float:
+        """The warp for the voice heard so far in this conversation (1: none, or vtln off)."""
+        return warp_for_pitch(self.speaker.hz) if self.vtln else 1.0
 
     def stream(self) -> "SphinxStream":
         return SphinxStream(self)
@@ -168,29 +195,38 @@ class PocketsphinxRecogniser(Recogniser):
                 return [(w, 0.0, 0.0, confidence) for w in text.split()]
         return words
 
-    def _choose(self, words, pcm: bytes, start: float) -> Recognition:
+    def _choose(self, words, pcm: bytes, start: float, warp: float = 1.0) -> Recognition:
         """The home search's words, or the open search's when the home one is unsure."""
         audio_s = len(pcm) / 2.0 / self.sample_rate_hz
         search = "home"
         if self.open_fallback and _confidence(words) < self.open_below:
             open_decoder = self._load_open()
             if open_decoder is not None:
+                self._open_front.use(warp, fresh=True)
                 other = _decode(open_decoder, pcm)
                 if other and (not words or _confidence(other) > _confidence(words) + self.open_margin):
                     words, search = other, "open"
         transcript = " ".join(w for w, *_ in words)
         return Recognition(transcript, _confidence(words), audio_s, time.perf_counter() - start, self.name,
-                           search, words)
+                           search, words, warp)
 
 
 class SphinxStream(RecognitionStream):
     """The home search fed while the person talks: at the end only its last passes remain.
-    (Cepstral mean normalisation is then live rather than over the whole utterance.)"""
+    (Cepstral mean normalisation is then live rather than over the whole utterance.)
+
+    With VTLN the warp is the conversation's (the pitch of every utterance heard before: steadier
+    than a part of one, whose pitch falls from its start to its end). For the first utterance of a
+    conversation the first :data:`VTLN_HOLD_S` of audio are held until the warp is chosen from their
+    pitch; the decoder then catches up with them in a few tens of milliseconds, while the person is
+    still talking (an utterance shorter than that is decoded whole at its end)."""
 
     def __init__(self, recogniser: PocketsphinxRecogniser):
         super().__init__(recogniser)
-        recogniser._home.start_utt()
+        self.warp: float | None = None  # None: held until VTLN_HOLD_S have been heard
         self.decode_s = 0.0
+        if not recogniser.vtln or recogniser.speaker.hz is not None:
+            self._start(np.zeros(0, dtype=np.float32))
         self._energies: list[float] = []  # of the 30 ms frames so far: the speech's power
         self._rng = np.random.default_rng(0)
 
@@ -200,8 +236,23 @@ class SphinxStream(RecognitionStream):
         if self.recogniser.floor_db is not None and len(samples):
             samples = self._with_floor(samples)
         super().feed(samples)
-        self.recogniser._home.process_raw(to_pcm16(samples))
+        if self.warp is not None:
+            self.recogniser._home.process_raw(to_pcm16(samples))
+        elif len(self.samples) >= VTLN_HOLD_S * self.recogniser.sample_rate_hz:
+            self._start(self.samples)
         self.decode_s += time.perf_counter() - start
+
+    def _start(self, held: np.ndarray) -> None:
+        """Choose the warp (the conversation's, else ``held``'s pitch), start, decode ``held``."""
+        rec = self.recogniser
+        f0 = rec.speaker.hz if rec.vtln else None
+        if rec.vtln and f0 is None and len(held):
+            f0 = pitch_hz(held)
+        self.warp = warp_for_pitch(f0) if rec.vtln else 1.0
+        rec._home_front.use(self.warp)
+        rec._home.start_utt()
+        if len(held):
+            rec._home.process_raw(to_pcm16(held))
 
     def _with_floor(self, samples: np.ndarray) -> np.ndarray:
         """The noise floor, from the power of the speech heard so far (as in whole decoding)."""
@@ -214,8 +265,12 @@ class SphinxStream(RecognitionStream):
 
     def finish(self) -> Recognition:
         start = time.perf_counter()
+        if self.warp is None:  # shorter than the hold
+            self._start(self.samples)
         self.recogniser._home.end_utt()
-        result = self.recogniser._choose(self.recogniser._home_words(), to_pcm16(self.samples), start)
+        result = self.recogniser._choose(self.recogniser._home_words(), to_pcm16(self.samples), start, self.warp)
+        if self.recogniser.vtln:
+            self.recogniser.speaker.add_later(self.samples)  # measured when the next utterance starts
         result.decode_s += self.decode_s
         return result
 
@@ -224,6 +279,43 @@ def _names_any(text: str, phrases) -> bool:
     """Whether ``text`` holds one of ``phrases`` as whole words."""
     padded = f" {text} "
     return any(f" {p} " in padded for p in phrases)
+
+
+class WarpedFrontEnd:
+    """A decoder's front end at a frequency warp (inverse linear: f is read as f / warp; 1: none).
+
+    pocketsphinx keeps the warp's parameters in process-wide variables, read when a front end is
+    built, and skips parsing a parameter string equal to the last one parsed, even when a decoder
+    built since without a warp has switched warping off: going back to an earlier warp would then
+    silently build an unwarped front end. Each change therefore passes a parameter string unlike
+    the previous one (the same number, spelt with or without a trailing space), and 1 is passed as
+    "1", not as no warp. (Decoders built in other threads at the same moment could still race.)
+
+    ``fresh``: rebuild the front end even when the warp is unchanged. Building it seeds the dither's
+    random numbers, which are process-wide too: without that, the words heard in an utterance
+    depended on what had been decoded before it (and by which decoder). Whole utterances are decoded
+    fresh, so the same audio always gives the same words; a stream is not (its live cepstral mean,
+    carried from the speaker's earlier utterances, would be reset), and when a stream's warp changes
+    that mean is kept: rebuilding would start the utterance from the model's initial mean, and in
+    the speech benchmark one such utterance fell to the slow open search (2.9 s)."""
+
+    _spelling = 0  # alternates between the two spellings, across every decoder of the process
+
+    def __init__(self, decoder):
+        self.decoder = decoder
+        self.warp = 1.0
+
+    def use(self, warp: float, fresh: bool = False) -> None:
+        if warp == self.warp and not fresh:
+            return
+        mean = None if fresh else self.decoder.get_cmn()
+        WarpedFrontEnd._spelling ^= 1
+        self.decoder.config["warp_type"] = "inverse_linear"
+        self.decoder.config["warp_params"] = f"{warp:g}" + " " * WarpedFrontEnd._spelling
+        self.decoder.reinit_feat()
+        if mean is not None:  # a stream's live cepstral mean is the speaker's: keep it over a new warp
+            self.decoder.set_cmn(mean)
+        self.warp = warp
 
 
 def _decode(decoder, pcm: bytes) -> list[tuple[str, float, float, float]]:

@@ -7,7 +7,8 @@ talk about it:
 * the homes: the room names, furniture words and models, and the objects of every packaged
   world (and of the world in use), put into command templates ("where is my mug", "bring me
   the laptop from the bedroom", "the fork is on the table in front of the couch");
-* the dialogue's control phrases (stop, cancel, repeat that, yes, no …) and everyday
+* the dialogue's control phrases (stop, cancel, repeat that, yes, no …), everyday rooms and
+  furniture the homes lack (kitchen, wardrobe …), and everyday
   household objects (wallet, keys, phone …) so "where is my wallet" is heard as said, even
   though the robot does not know that object (it then says so).
 
@@ -32,6 +33,31 @@ HOUSEHOLD_OBJECTS = (
     "pillow", "towel", "toy", "ball", "camera", "lamp", "clock", "vase", "box", "basket", "hairbrush",
     "comb", "gloves", "scarf", "backpack", "passport", "ticket", "card", "money", "coins", "sweater",
     "teddy bear", "hearing aid", "walking stick", "cane", "keyboard", "mouse", "speaker", "radio",
+)
+
+#: rooms people name that the packaged homes lack ("go to the kitchen" is then heard as said,
+#: and the robot can answer that this home has no kitchen)
+HOUSEHOLD_ROOMS = (
+    "kitchen", "bathroom", "dining room", "garage", "laundry room", "basement", "attic", "guest room",
+    "study", "den", "porch", "balcony", "closet", "pantry", "family room", "lounge", "hall",
+    "entrance", "corridor", "toilet", "spare room", "playroom", "nursery", "utility room",
+)
+
+#: furniture people name that the packaged homes lack (heard as said, then asked about:
+#: "I don't know the word 'credenza' — is it a table …?")
+HOUSEHOLD_FURNITURE = (
+    "armchair", "wardrobe", "cabinet", "cupboard", "bookshelf", "bookcase", "sideboard", "credenza",
+    "ottoman", "stool", "bench", "counter", "kitchen counter", "chest of drawers", "end table",
+    "side table", "dining table", "kitchen table", "night table", "bedside table", "tv stand",
+    "piano", "fridge", "refrigerator", "oven", "sink", "windowsill", "fireplace", "recliner",
+    "footstool", "coat rack", "filing cabinet", "drawer", "cot", "crib", "futon", "loveseat",
+)
+
+#: commands over an everyday room ({r}) or piece of furniture ({f}), with a home's object ({o})
+EVERYDAY_TEMPLATES = (
+    "go to the {r}", "go into the {r}", "bring me the {o} from the {r}", "the {o} is in the {r}",
+    "the {o} is on the {f}", "bring me the {o} from the {f}", "get my {o} from the {f} in the {r}",
+    "the {o} is on the {f} in the {r}", "my {o} is on the {f} next to the {f}",
 )
 
 #: how many times more often the home's objects appear in the templates than everyday objects
@@ -190,6 +216,21 @@ def template_sentences(words: dict[str, list[str]]) -> list[str]:
     return [normalise_transcript(s) for s in out]
 
 
+def everyday_sentences(words: dict[str, list[str]]) -> list[str]:
+    """:data:`EVERYDAY_TEMPLATES` over the rooms and furniture of :data:`HOUSEHOLD_ROOMS` and
+    :data:`HOUSEHOLD_FURNITURE` the homes lack, each once per template, with the homes' objects
+    in a fixed rotation: a little weight, so the homes' own words are still heard first."""
+    known = words["objects"]
+    rooms = [r for r in HOUSEHOLD_ROOMS if r not in words["rooms"]]
+    furniture = [f for f in HOUSEHOLD_FURNITURE if f not in words["furniture"]]
+    out = []
+    for j, t in enumerate(EVERYDAY_TEMPLATES):
+        for i in range(max(len(rooms), len(furniture)) if "{f}" in t else len(rooms)):
+            out.append(t.format(o=known[(i + j) % len(known)], r=rooms[i % len(rooms)],
+                                f=furniture[i % len(furniture)]))
+    return [normalise_transcript(s) for s in out]
+
+
 def clause_sentences(words: dict[str, list[str]], count: int = 12000) -> list[str]:
     """Commands built from :data:`MOTIONS`, :data:`SUBJECTS`, :data:`SIZES` and :data:`RELATIONS`
     over the home's rooms, objects and furniture: ``count`` of them, picked by fixed strides
@@ -212,7 +253,8 @@ def clause_sentences(words: dict[str, list[str]], count: int = 12000) -> list[st
 def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
     """The sentences and phrases the recogniser's model is built from (see the module doc)."""
     words = home_words(world)
-    sentences = corpus_sentences(corpus_paths) + template_sentences(words) + clause_sentences(words)
+    sentences = (corpus_sentences(corpus_paths) + template_sentences(words) + everyday_sentences(words)
+                 + clause_sentences(words))
     # short phrases said on their own: weighted so a sentence start does not drown them
     sentences += [normalise_transcript(p) for p in CONTROL_PHRASES] * CONTROL_WEIGHT
     phrases = [normalise_transcript(p) for p in CONTROL_PHRASES]

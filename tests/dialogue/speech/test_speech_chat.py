@@ -47,8 +47,9 @@ def test_listen_json_reports_transcript_confidence_timing_and_parse(tmp_path, sa
     done = run(["listen", str(path), "--json"], tmp_path)
     assert done.returncode == 0, done.stderr
     out = json.loads(done.stdout)
-    assert set(out) >= {"transcript", "confidence", "timing", "parse"}
+    assert set(out) >= {"transcript", "confidence", "timing", "parse", "warp"}
     assert out["timing"]["decode_s"] > 0 and out["timing"]["audio_s"] > 2
+    assert out["warp"] == 1.0  # espeak-ng's en-us: a man's pitch, not warped
     assert out["parse"]["plan"]["room"] == "bedroom"  # accuracy itself: assistant eval speech
     silent = tmp_path / "silence.wav"
     import numpy as np
