@@ -48,6 +48,11 @@ from assistant.dialogue.speech.vtln import SpeakerPitch, pitch_hz, warp_for_pitc
 #: errors in development, docs/speech.md), dither with a fixed seed
 DECODER_SETTINGS = {"dither": True, "seed": 1, "beam": 1e-60, "wbeam": 1e-40, "pbeam": 1e-60,
                     "loglevel": "FATAL"}
+#: the open search's settings over DECODER_SETTINGS: pocketsphinx's default beams and a cap on the
+#: HMMs and words searched per frame — with the home search's wide beams its 72 000-word model
+#: decoded slower than real time (4–5 s of CPU for a 3.8 s utterance), so an utterance that fell
+#: to it was answered seconds late (``benchmarks/bench_open_search.py``)
+OPEN_SEARCH = {"beam": 1e-48, "wbeam": 7e-29, "pbeam": 1e-48, "maxhmmpf": 3000, "maxwpf": 20}
 FILLERS = frozenset({"<s>", "</s>", "<sil>", "<unk>"})
 FRAME_S = 0.01
 #: the noise floor added before decoding, in dB under the speech's power (None: none)
@@ -138,7 +143,7 @@ class PocketsphinxRecogniser(Recogniser):
                 import pocketsphinx as ps
 
                 try:
-                    self._open = ps.Decoder(**self.settings)
+                    self._open = ps.Decoder(**{**self.settings, **OPEN_SEARCH})
                     self._open_front = WarpedFrontEnd(self._open)
                 except (RuntimeError, ValueError) as error:  # the packaged model is damaged
                     self._open_error = str(error)
