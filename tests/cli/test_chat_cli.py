@@ -78,6 +78,7 @@ def test_fetch_to_the_end_updates_memory_and_eof_leaves(tmp_path):
     child.expect("Here it is: I can see your mug")
     child.sendline("where is my mug")
     child.expect("I saw your mug just now")
+    child.expect_exact(PROMPT)  # Ctrl-D once readline reads again (see the earlier-session test)
     child.sendeof()
     child.expect("Goodbye")
     child.expect(pexpect.EOF)
@@ -134,7 +135,10 @@ def test_a_sighting_from_an_earlier_session_says_when_and_a_bad_entry_is_skipped
     child.sendline("where is my mug")
     when = time.strftime("%d %B", time.localtime(earlier)).lstrip("0")
     child.expect(f"I saw your mug on {when}")
-    child.sendcontrol("d")
+    # Ctrl-D once readline reads again: sent while the reply is still being printed, the terminal's
+    # line discipline could take it before readline set the terminal up, and it was lost
+    child.expect_exact(PROMPT)
+    child.sendeof()
     child.expect(pexpect.EOF)
     child.close()
 
