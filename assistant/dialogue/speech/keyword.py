@@ -49,8 +49,7 @@ class KeywordSpotter:
         self.max_run_s = max_run_s  # None: every detection counts
         self.ignored = 0  # detections inside longer speech, not reported
         self._vad = ps.Vad(0)
-        self._frame = self._vad.frame_bytes // 2
-        self._pending = np.zeros(0, dtype=np.float32)
+        self._pending = b""  # PCM not yet judged by the voice activity detector (under a frame)
         self._vad_s = 0.0  # audio the voice activity detector has judged (seconds)
         self._run_start_s: float | None = None
         self._speech_end_s = -1.0
@@ -60,7 +59,7 @@ class KeywordSpotter:
         if self._started:
             self._decoder.end_utt()
             self._started = False
-        self._pending = np.zeros(0, dtype=np.float32)
+        self._pending = b""
         self._run_start_s = None
 
     def feed(self, samples: np.ndarray) -> bool:
@@ -69,8 +68,10 @@ class KeywordSpotter:
             self._decoder.start_utt()
             self._started = True
         self.heard_s += len(samples) / float(SAMPLE_RATE_HZ)
-        self._track_speech(samples)
-        self._decoder.process_raw(to_pcm16(samples))
+        pcm = to_pcm16(samples)
+        if self.max_run_s is not None:
+            self._track_speech(pcm)
+        self._decoder.process_raw(pcm)
         if self._decoder.hyp() is None:
             return False
         run_s = self.speech_run_s()
@@ -81,17 +82,19 @@ class KeywordSpotter:
         return True
 
     def speech_run_s(self) -> float:
-        """How long the stretch of speech heard now has lasted (seconds; 0 in a pause)."""
+        """Seconds since the latest stretch of speech began (pauses under :data:`PAUSE_S` do not
+        end one); 0 before any speech."""
         if self._run_start_s is None:
             return 0.0
         return self._vad_s - self._run_start_s
 
-    def _track_speech(self, samples: np.ndarray) -> None:
-        audio = np.concatenate([self._pending, np.asarray(samples, dtype=np.float32)])
-        whole = len(audio) - len(audio) % self._frame
-        step = self._frame / float(SAMPLE_RATE_HZ)
-        for start in range(0, whole, self._frame):
-            if self._vad.is_speech(to_pcm16(audio[start:start + self._frame])):
+    def _track_speech(self, pcm: bytes) -> None:
+        audio = self._pending + pcm
+        size = self._vad.frame_bytes
+        whole = len(audio) - len(audio) % size
+        step = size / 2.0 / SAMPLE_RATE_HZ
+        for start in range(0, whole, size):
+            if self._vad.is_speech(audio[start:start + size]):
                 if self._run_start_s is None or self._vad_s - self._speech_end_s > PAUSE_S:
                     self._run_start_s = self._vad_s
                 self._speech_end_s = self._vad_s + step
