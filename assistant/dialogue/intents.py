@@ -28,7 +28,11 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bhave you seen\b",
-               r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b")),
+               r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b",
+               # a loss told rather than asked: "I can't find my keys", "I've lost my wallet"
+               r"\b(cant|can not|cannot|couldnt|could not) find (my|our|the|his|her)\b",
+               r"\b(ive|i have|i|weve|we have|we|she|he|has) (lost|misplaced|mislaid)\b",
+               r"\bhelp me (find|look for)\b", r"^(you|anyone|anybody|has anyone|has anybody) seen\b")),
     ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
              r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),
     ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
