@@ -5,9 +5,10 @@ and in household noise) the recogniser's words are compared with the typed sente
 
 * **word error rate** — (substitutions + deletions + insertions) / reference words, over the
   normalised words (lower case, no punctuation);
-* **plan equal** — for commands and where-questions, whether the parse of the heard words gives
-  the same plan (room, RDT nodes, object, support furniture) as the parse of the typed text
-  (:class:`~assistant.grounding.CommandParser` in the utterance's home);
+* **plan equal** — for commands and where-questions, whether the robot would do the same with the
+  heard words as with the typed text (:func:`request_of`, in the utterance's home): a command's
+  plan (room, RDT nodes, object, support furniture) from :class:`~assistant.grounding.CommandParser`;
+  a where-question's kind and the thing it asks for, read as the dialogue reads them;
 * **intent equal** — for every utterance, whether the dialogue routes the heard words to the same
   intent as the typed ones (:func:`~assistant.dialogue.classify`);
 * **timing** — decoding seconds and the real-time factor (decode time / audio length);
@@ -38,6 +39,21 @@ def word_errors(reference: str, hypothesis: str) -> int:
 def plan_of(parser, text: str) -> dict:
     plan = parser.parse(text).to_dict()["plan"]
     return {k: plan.get(k) for k in PLAN_KEYS}
+
+
+def request_of(parser, text: str) -> dict:
+    """What the robot would do with ``text`` in ``parser``'s home, as the dialogue routes it
+    (:class:`~assistant.dialogue.DialogueManager`): a where-question ("where are my keys", "how do
+    I get to my wallet") → its kind and the thing asked for (known object, or the unknown noun);
+    anything else → the command parser's plan. (The parser reads commands: "where are my keys"
+    is no command to it and gives an empty plan, so where-questions are not compared by it.)"""
+    from assistant.dialogue import classify
+    from assistant.dialogue.clarify import named_object
+
+    intent = classify(text)
+    if intent.name in ("where", "where_dynamic"):
+        return {"intent": intent.name, "object": named_object(intent.text, parser.world)}
+    return {"intent": "command", **plan_of(parser, text)}
 
 
 class _Parsers:
@@ -102,7 +118,7 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
                "plan_equal": None, "would_confirm": heard.confidence < threshold}
         if item.kind in ("command", "where"):
             parser = parsers(item.world)
-            row["plan_equal"] = plan_of(parser, heard.transcript) == plan_of(parser, item.text)
+            row["plan_equal"] = request_of(parser, heard.transcript) == request_of(parser, item.text)
         rows.append(row)
     recogniser.close()
     head = {"engine": engine, "recogniser": recogniser.describe(), "per_kind": per_kind, "all_voices": all_voices,

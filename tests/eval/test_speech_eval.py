@@ -76,3 +76,18 @@ def test_quick_evaluation_of_where_questions_gives_rows_and_groups():
     assert report["vtln"] and report["recogniser"]["vtln"] and warps["en-us"] == 1.0 and warps["en-us+f3"] > 1.0
     plain = evaluate_speech(per_kind=2, kinds=["where"], snrs_db=(None,), open_fallback=False, vtln=False)
     assert not plain["vtln"] and {r["warp"] for r in plain["rows"]} == {1.0}
+
+
+def test_where_questions_are_compared_as_the_dialogue_reads_them():
+    from assistant.eval.speech import _Parsers, request_of
+
+    parser = _Parsers()("apartment")
+    keys = request_of(parser, "have you seen my keys")
+    assert keys == {"intent": "where", "object": ("keys", None)}  # the parser alone finds no object here
+    assert request_of(parser, "where are my keys") == request_of(parser, "where is my key") == keys
+    assert request_of(parser, "where is my mug") != request_of(parser, "where is my money")
+    assert request_of(parser, "where is my wallet")["object"] == ("wallet", None)  # any thing can be asked for
+    assert request_of(parser, "how do i get to my mug")["intent"] == "where_dynamic"
+    command = request_of(parser, "go into the bedroom and turn left the mug is on the table")
+    assert command["intent"] == "command" and command["object"] == "mug" and command["nodes"]
+    assert request_of(parser, "where leave my statue")["intent"] == "command"  # not heard as a question
