@@ -27,7 +27,16 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"\blearn what\b")),
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
-    ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bhave you seen\b",
+    ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
+               # where asked inside another sentence: "any idea where my keys are", "tell me where …"
+               r"^(.* )?(any idea|no idea|tell me|know|wonder|remember|show me|see) where\b",
+               r"^where (on earth |in the world |the heck |the hell )?(are|is|my|the|our|his|her)\b",
+               r"^(.* )?(im|i am|were|we are|been) (looking|searching) (everywhere )?for (my|our|the|his|her) "
+               r"[a-z]+( [a-z]+)?( everywhere)?$",
+               # a bare search request; with a place ("find my phone in the bedroom") it stays a command
+               r"^(please )?((can|could|would|will) you )?(please )?(find|locate|search for|look for) "
+               r"(my|our|the|his|her) [a-z]+( [a-z]+)?( for me)?( please)?$",
+               r"\bhave you seen\b",
                r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b",
                # a loss told rather than asked: "I can't find my keys", "I've lost my wallet"
                r"\b(cant|can not|cannot|couldnt|could not) find (my|our|the|his|her)\b",
