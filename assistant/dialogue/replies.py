@@ -110,7 +110,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
     if item is not None:
         where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
-                time.perf_counter() - start)
+                time.perf_counter() - start), pending
 
 
 def place_text(place: dict) -> str | None:
