@@ -10,6 +10,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+#: how a person may start by addressing the robot ("hey robot, …", "robot, …")
+ADDRESS = r"((hey|hi|hello|ok|okay)( there)?( robot)? |robot )?"
+
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
     ("stop", (r"^(please )?(stop|halt|freeze|wait|hold on|stay)( (it|now|there|right now|please|moving|that))*$",
@@ -25,6 +28,16 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
+    # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
+    ("status", (r"^" + ADDRESS + r"(where are you|what are you doing|what are you up to|are you (done|finished|busy|"
+                r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
+                r"( now| robot| right now)?$",)),
+    ("come_here", (r"^" + ADDRESS + r"(please )?(come|come here|come back|come to me|come over here|over here|follow me|"
+                   r"come and find me)( please| robot| now)*$",)),
+    ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
+                   r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
+    ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
+                      r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
@@ -48,7 +61,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
              r"yes please|go and check|check|sure thing)$",)),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",)),
     ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",)),
-    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",)),
+    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",
+                r"^(that is |thats |very )?(good robot|good boy|good girl|nice work|nice one|great|awesome|perfect|"
+                r"brilliant|excellent|wonderful|lovely)( robot)?$")),
     ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),
 ]
 

@@ -29,7 +29,7 @@ from assistant.dialogue.intents import NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
-from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, Turn
+from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
@@ -147,13 +147,13 @@ class DialogueManager:
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
         if name == "bye":  # the conversation ends (the REPL leaves on this action)
             return self._turn(text, name, "Goodbye.", "leave", "answered", start)
-        if name == "greet":
-            return self._turn(text, name, "Hello! What can I do for you?", start=start)
-        if name == "thanks":
-            return self._turn(text, name, "You're welcome.", start=start)
-        if name == "rude":
-            return self._turn(text, name, "I'm sorry I'm not being more helpful. Tell me what you need, "
-                              "for example \"bring me the mug from the bedroom\".", start=start)
+        if name in SOCIAL_REPLIES:
+            return self._turn(text, name, SOCIAL_REPLIES[name], start=start)
+        if name == "status":
+            doing = self.activity
+            return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
+                              if doing is None else f"I'm {doing[0]} ({doing[1]:.0f} s so far). Say \"stop\" to "
+                              "stop me.", start=start)
         if name in ("where", "where_dynamic"):
             return self._where(text, intent, start)
         if name == "teach":

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-__all__ = ["HELP_TEXT", "NUMBER_WORDS", "Turn", "join_words"]
+__all__ = ["HELP_TEXT", "NUMBER_WORDS", "SOCIAL_REPLIES", "Turn", "join_words"]
 
 NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
@@ -12,6 +12,18 @@ HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table 
              "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
              "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
              "\"repeat that\", \"which home am I in\", \"start over\" or \"bye\".")
+#: intent → the reply to it (what people say to a robot besides requests)
+SOCIAL_REPLIES = {
+    "greet": "Hello! What can I do for you?",
+    "thanks": "You're welcome.",
+    "rude": "I'm sorry I'm not being more helpful. Tell me what you need, for example \"bring me the mug "
+            "from the bedroom\".",
+    "smalltalk": "I'm the home robot: I find things, tell you where they are and fetch them. What can I do "
+                 "for you?",
+    "out_of_scope": "I can't help with that: I find things in this home, tell you where they are and fetch "
+                    "them. Say \"help\" for examples.",
+    "come_here": "I can't see where you are. Tell me where to go, for example \"go to the living room\".",
+}
 
 
 @dataclass

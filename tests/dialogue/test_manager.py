@@ -221,3 +221,22 @@ def test_the_chat_shows_its_status_line_on_a_terminal_only(tmp_path, monkeypatch
     shown._start_status()  # both ends a terminal: shown
     assert shown.status is not None
     shown.status.stop()
+
+
+def test_the_robot_says_what_it_is_doing_and_answers_what_it_cannot_do(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(hold=True))
+    assert m.handle("where are you?").reply.startswith("Nothing right now")  # not "what are you looking for"
+    assert m.handle("go into the bedroom").outcome == "started"
+    deadline = time.monotonic() + 5
+    while m.activity is None or m.activity[0] == "on my way":  # the stand-in enters the bedroom first
+        assert time.monotonic() < deadline
+        time.sleep(0.01)
+    status = m.handle("what are you doing")
+    assert status.intent == "status" and status.reply.startswith("I'm in the bedroom (") and "stop" in status.reply
+    assert m.busy  # asking does not stop it
+    m.handle("stop")
+    m.wait(5)
+    for said, intent in (("come here", "come_here"), ("what time is it?", "out_of_scope"),
+                         ("how are you", "smalltalk"), ("good robot", "thanks")):
+        turn = m.handle(said)
+        assert turn.intent == intent and "don't know the word" not in turn.reply, (said, turn.reply)
