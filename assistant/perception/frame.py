@@ -103,11 +103,16 @@ def thread_limit(threads: int = 1):
     on the loaded machine, ``docs/perception.md``). So when the variable is unset this sets it,
     to the OpenMP thread count the process has now: nothing changes outside the limit (open3d
     gets the OpenMP count instead of the core count, the same on this machine), and inside it
-    open3d obeys."""
+    open3d obeys. The first call also applies :func:`assistant.runtime.keep_freed_memory` (a
+    frame's arrays then reuse freed memory instead of faulting fresh pages in)."""
     if not _CONTROLLER:
         import importlib
 
         from threadpoolctl import ThreadpoolController
+
+        from assistant.runtime import keep_freed_memory
+
+        keep_freed_memory()
 
         importlib.import_module("open3d")  # its OpenMP runtime must be loaded to be found
 
