@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from assistant.perception.features import percentiles
-from assistant.perception.samples import FurnitureSample
+from assistant.perception.samples import FurnitureSample, centred_xy
 
 
 @dataclass(frozen=True)
@@ -52,7 +52,7 @@ class RegroupParams:
 
 
 def _ranges(points: np.ndarray, camera_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    d = points[:, :2] - camera_xy
+    d, _ = centred_xy(points, np.asarray(camera_xy, dtype=float))
     return np.hypot(d[:, 0], d[:, 1]), np.arctan2(d[:, 1], d[:, 0])
 
 
