@@ -153,7 +153,7 @@ def covariance(rows: np.ndarray) -> np.ndarray:
     """``np.cov(rows)`` of a (variables, observations) array, bit for bit (the same copy, mean,
     product and scaling), without its argument handling; at least two observations."""
     X = np.array(rows, ndmin=2, dtype=np.float64)
-    X -= X.mean(axis=1)[:, None]
+    X -= (np.add.reduce(X, axis=1) / X.shape[1])[:, None]  # X.mean(axis=1), its sum and division
     c = np.dot(X, X.T.conj())
     c *= np.true_divide(1, X.shape[1] - 1)
     return c.squeeze()
