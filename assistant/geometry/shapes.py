@@ -66,7 +66,10 @@ def rectangle_fill(cells: np.ndarray) -> tuple[float, float, float]:
     if len(cells) == 0:
         return 0.0, 0.0, 1.0
     u, v = cells @ _FILL_AXES, cells @ _FILL_NORMALS  # (K, angles): every direction at once
-    lu, lv = np.ptp(u, axis=0) + 1.0, np.ptp(v, axis=0) + 1.0
+    # extents per direction from the transposed copies: numpy reduces an (K, 12) array's
+    # columns 12 values at a time, K times over (3–5× slower for a few hundred cells)
+    lu = np.ptp(np.ascontiguousarray(u.T), axis=1) + 1.0
+    lv = np.ptp(np.ascontiguousarray(v.T), axis=1) + 1.0
     fills = len(cells) / (lu * lv)
     k = int(np.argmax(fills))
     angle = FILL_ANGLES[k] if lu[k] >= lv[k] else FILL_ANGLES[k] + np.pi / 2

@@ -249,6 +249,8 @@ class FurnitureClassifier(ClassifierMixin, BaseEstimator):
     def fit(self, X, y):
         self.estimator_ = clone(make_classifier(self.method, self.features, self.random_state)).fit(X, y)
         self.classes_ = np.asarray(self.estimator_.classes_)
+        for cached in ("_rbf_decision", "_categories"):  # made from the previous fit
+            self.__dict__.pop(cached, None)
         return self
 
     def predict(self, X):
@@ -283,7 +285,9 @@ class FurnitureClassifier(ClassifierMixin, BaseEstimator):
         category's summed probability per sample ({category: (n,)})."""
         p = self.scores(X)
         best = np.argmax(p, axis=1)
-        cats = np.array([category_of(c) for c in self.classes_])
+        cats = self.__dict__.get("_categories")  # each class's category, once per fit
+        if cats is None:
+            cats = self.__dict__["_categories"] = np.array([category_of(c) for c in self.classes_])
         per_category = {c: p[:, cats == c].sum(axis=1) for c in dict.fromkeys(cats)}
         conf = np.array([per_category[cats[k]][i] for i, k in enumerate(best)])
         return self.classes_[best], conf, per_category

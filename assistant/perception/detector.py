@@ -29,6 +29,7 @@ from assistant.perception.features import (
 from assistant.perception.frame import FrameAnalysis, FrameParams, analyse_frame, thread_limit
 from assistant.perception.instances import OTHER
 from assistant.perception.regroup import range_cut, regroup
+from assistant.perception.samples import centred_xy
 from assistant.robot.frames import DepthFrame
 from assistant.world.entity import Entity, EntityKind
 
@@ -412,7 +413,7 @@ def _centre(xy: np.ndarray, facing: float | None, category: str | None = None,
         a = facing
         axes = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
     else:
-        _, vecs = np.linalg.eigh(covariance((xy - xy.mean(axis=0)).T))
+        _, vecs = np.linalg.eigh(covariance(centred_xy(xy)[0].T))
         axes = vecs.T
     local = xy @ axes.T
     lo, hi = percentiles(local, (2, 98))

@@ -103,11 +103,16 @@ def thread_limit(threads: int = 1):
     on the loaded machine, ``docs/perception.md``). So when the variable is unset this sets it,
     to the OpenMP thread count the process has now: nothing changes outside the limit (open3d
     gets the OpenMP count instead of the core count, the same on this machine), and inside it
-    open3d obeys."""
+    open3d obeys. The first call also applies :func:`assistant.runtime.keep_freed_memory` (a
+    frame's arrays then reuse freed memory instead of faulting fresh pages in)."""
     if not _CONTROLLER:
         import importlib
 
         from threadpoolctl import ThreadpoolController
+
+        from assistant.runtime import keep_freed_memory
+
+        keep_freed_memory()
 
         importlib.import_module("open3d")  # its OpenMP runtime must be loaded to be found
 
@@ -181,15 +186,18 @@ def _sample_points(points: np.ndarray, camera_to_floor: np.ndarray, params: Samp
     """The floor-frame points that can belong to a sample (``samples.sample_region``) and their
     indices in ``points``: each floor coordinate is one matrix-vector product over the cloud
     (the same values as ``cloud.transform``), and only the kept points — not the floor, most
-    of the frame — are gathered into an (N, 3) array."""
+    of the frame — are gathered into an (N, 3) array. The height is tested first, and the
+    rest of the region only on the points at furniture height (the floor is most of a frame)."""
     x, y, z = (points @ camera_to_floor[k, :3] for k in range(3))
+    z += camera_to_floor[2, 3]
+    high = np.flatnonzero((z > params.min_z_m) & (z < params.max_z_m))
+    x, y, z = x[high], y[high], z[high]
     x += camera_to_floor[0, 3]
     y += camera_to_floor[1, 3]
-    z += camera_to_floor[2, 3]
-    keep = np.flatnonzero(sample_region(x, y, z, params))
-    out = np.empty((len(keep), 3))
-    out[:, 0], out[:, 1], out[:, 2] = x[keep], y[keep], z[keep]
-    return out, keep
+    inside = np.flatnonzero(sample_region(x, y, z, params))
+    out = np.empty((len(inside), 3))
+    out[:, 0], out[:, 1], out[:, 2] = x[inside], y[inside], z[inside]
+    return out, high[inside]
 
 
 def _why_no_samples(stats: dict) -> str:

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from assistant.perception.features import percentiles
-from assistant.perception.samples import FurnitureSample
+from assistant.perception.samples import FurnitureSample, centred_xy
 
 
 @dataclass(frozen=True)
@@ -52,7 +52,7 @@ class RegroupParams:
 
 
 def _ranges(points: np.ndarray, camera_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    d = points[:, :2] - camera_xy
+    d, _ = centred_xy(points, np.asarray(camera_xy, dtype=float))
     return np.hypot(d[:, 0], d[:, 1]), np.arctan2(d[:, 1], d[:, 0])
 
 
@@ -181,10 +181,13 @@ def _side_piece(sample: FurnitureSample, centre: np.ndarray, major: np.ndarray, 
     cells = sample.cells_xy_m
     grid = math.sqrt(_cell_area(sample))
     along, across = (cells - centre) @ major, (cells - centre) @ minor
+    # the cross-section's ends in each 0.1 m slice along the item (the slices that hold cells)
     k = np.floor((along - along.min()) / 0.1).astype(int)
-    groups = np.unique(k)
-    lo = np.array([across[k == i].min() for i in groups])
-    hi = np.array([across[k == i].max() for i in groups])
+    lo, hi = np.full(k.max() + 1, np.inf), np.full(k.max() + 1, -np.inf)
+    np.minimum.at(lo, k, across)
+    np.maximum.at(hi, k, across)
+    held = np.bincount(k) > 0
+    lo, hi = lo[held], hi[held]
     ij = np.round((cells - cells.min(axis=0)) / grid).astype(int)
     point_ij = np.floor((sample.points[:, :2] - cells.min(axis=0) + grid / 2) / grid + 1e-6).astype(int)
     for side, edge in ((1, float(np.median(hi))), (-1, float(np.median(lo)))):
@@ -194,9 +197,10 @@ def _side_piece(sample: FurnitureSample, centre: np.ndarray, major: np.ndarray, 
         image = np.zeros(ij.max(axis=0) + 1, dtype=bool)
         image[ij[outside, 0], ij[outside, 1]] = True
         labels, count = ndimage.label(image, structure=np.ones((3, 3)))
+        cell_label = labels[ij[:, 0], ij[:, 1]]
         best = None
         for c in range(1, count + 1):
-            piece = outside & (labels[ij[:, 0], ij[:, 1]] == c)
+            piece = outside & (cell_label == c)
             if np.count_nonzero(piece) * grid * grid < p.min_side_m2:
                 continue
             if max(np.ptp(along[piece]), np.ptp(across[piece])) > p.max_side_m:

@@ -374,12 +374,8 @@ def wall_continuation(points: np.ndarray, rows: np.ndarray, cols: np.ndarray, wa
     if len(points) < 2 or not wall.any():
         return out
     col = np.rint(cols).astype(np.int64)
-    if np.all(rows[1:] >= rows[:-1]):  # image order (a frame's cloud): a stable sort by column
-        order = np.argsort(col, kind="stable")
-    else:
-        order = np.lexsort((rows, col))
+    order, cs = _column_order(col, rows)
     n = len(order)
-    cs = col.take(order)
     z = points[:, 2].take(order)
     rng = np.hypot(points[:, 0] - camera_xy[0], points[:, 1] - camera_xy[1]).take(order)
     spanned = np.zeros(n, dtype=bool)  # spanned[g]: an accepted step crosses the gap g-1 | g
@@ -402,6 +398,23 @@ def wall_continuation(points: np.ndarray, rows: np.ndarray, cols: np.ndarray, wa
     return out
 
 
+def _column_order(col: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.lexsort((rows, col))`` (readings by image column, then row, then index) and the
+    sorted columns. A frame's cloud is in image order, so a stable sort by column alone gives
+    that order unless some column's rows then decrease somewhere (its rows are computed back
+    from the points, so they can be out of order by a rounding): checked, and only then the
+    lexsort. Columns are sorted as 16-bit integers, for which numpy's stable sort is a radix
+    sort (~2× faster)."""
+    key = col.astype(np.int16) if len(col) and -32768 <= col.min() and col.max() < 32768 else col
+    order = np.argsort(key, kind="stable")
+    cs = col.take(order)
+    r = rows.take(order)
+    if np.any((cs[1:] == cs[:-1]) & (r[1:] < r[:-1])):
+        order = np.lexsort((rows, col))
+        cs = col.take(order)
+    return order, cs
+
+
 def _with_wall_remains(cleared: np.ndarray, occupied: np.ndarray, flat: np.ndarray,
                        z: np.ndarray, shape: tuple[int, int], top_m: float, rings: int = 2
                        ) -> np.ndarray:
@@ -419,14 +432,30 @@ def _with_wall_remains(cleared: np.ndarray, occupied: np.ndarray, flat: np.ndarr
     """
     from scipy import ndimage
 
-    cell_top = np.full(len(cleared), -np.inf)
-    np.maximum.at(cell_top, flat, z)
-    tall = occupied & ~cleared & (cell_top > top_m)
+    # the cells whose highest point is above top_m: those holding any point above it
+    above = np.zeros(len(cleared), dtype=bool)
+    above[flat[z > top_m]] = True
+    tall = occupied & ~cleared & above
     if not tall.any():
         return cleared
     grown = ndimage.binary_dilation(cleared.reshape(shape), structure=np.ones((3, 3), dtype=bool),
                                     iterations=rings, mask=(cleared | tall).reshape(shape))
     return grown.reshape(-1)
+
+
+def centred_xy(points: np.ndarray, centre: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """``(points[:, :2] - centre, centre)``, ``centre`` by default ``points[:, :2].mean(axis=0)``
+    — bit for bit, column by column. numpy reduces and broadcasts an (N, 2) array two values at
+    a time, N times over (~10–20× slower than a column on this machine); its axis-0 mean adds
+    the rows in order, which is a column's cumulative sum's last value (not the column's own
+    pairwise sum). Returns a new C-ordered (N, 2) array, as the subtraction did."""
+    x, y = points[:, 0], points[:, 1]
+    if centre is None:
+        centre = np.array([np.cumsum(x)[-1], np.cumsum(y)[-1]]) / len(x)
+    xy = np.empty((len(x), 2))
+    np.subtract(x, centre[0], out=xy[:, 0])
+    np.subtract(y, centre[1], out=xy[:, 1])
+    return xy, centre
 
 
 def _is_wall_piece(points: np.ndarray, p: SampleParams) -> bool:
@@ -442,9 +471,10 @@ def _is_wall_piece(points: np.ndarray, p: SampleParams) -> bool:
         return False
     if not points[:, 2].max() > 1.2 - 1e-9:  # (margins: rounding in the tests below)
         return False
-    if not math.hypot(*np.ptp(points[:, :2], axis=0)) > p.wall_length_m - 1e-9:
+    x, y = points[:, 0], points[:, 1]  # column by column (see centred_xy)
+    if not math.hypot(x.max() - x.min(), y.max() - y.min()) > p.wall_length_m - 1e-9:
         return False
-    xy = points[:, :2] - points[:, :2].mean(axis=0)
+    xy, _ = centred_xy(points)
     a, b = xy[:, 0], xy[:, 1]
     ab = a @ b
     cov = np.array([[a @ a, ab], [ab, b @ b]]) / (len(xy) - 1)  # np.cov of the centred points

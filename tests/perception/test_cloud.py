@@ -108,3 +108,44 @@ def test_the_two_round_plane_scoring_on_the_real_frames(shared_dir):
     for _, _, frame in load_frames(root):
         pts, _ = depth_to_points(frame.depth_m, frame.intrinsics, 2)
         _assert_two_rounds_pick_the_full_scorings_plane(pts)
+
+
+def test_depth_to_points_is_open3ds_back_projection_bit_for_bit():
+    """2 Dec night (speed): the points are computed in numpy on the pixels read; they must be
+    open3d's ``create_from_depth_image`` of the sanitised image, bit for bit (signs of zeros
+    too), in the same order, with the missing, negative, NaN, infinite and too far readings
+    (beyond the range + 1 m; open3d applies no cut to a float image) left out, for any stride."""
+    import open3d as o3d
+
+    from assistant.perception.cloud import sanitize_depth
+
+    depth = floor_depth(1.05, 15.0)
+    depth[::3] = 6.5
+    depth[1::5] = 7.0
+    depth[2::7, ::2] = np.nan
+    depth[:, 5] = -1.0
+    depth[:, 7] = np.inf
+    depth[:, 9] = np.nextafter(np.float32(7.0), np.float32(8.0))
+    depth[:, 11] = 0.0
+    k = o3d.camera.PinholeCameraIntrinsic(K.width, K.height, K.fx, K.fy, K.cx, K.cy)
+    for stride in (1, 2, 3):
+        image = o3d.geometry.Image(np.ascontiguousarray(sanitize_depth(depth, 7.0)))
+        expected = np.asarray(o3d.geometry.PointCloud.create_from_depth_image(
+            image, k, depth_scale=1.0, depth_trunc=6.0, stride=stride).points)
+        pts, rows = depth_to_points(depth, K, stride=stride, max_range_m=6.0)
+        assert pts.shape == expected.shape and np.array_equal(pts, expected)
+        assert np.array_equal(np.signbit(pts), np.signbit(expected))
+        assert np.array_equal(rows, K.fy * expected[:, 1] / expected[:, 2] + K.cy)
+    assert depth_to_points(np.zeros((K.height, K.width)), K)[0].shape == (0, 3)
+
+
+def test_the_floor_search_helpers_are_numpys_bit_for_bit():
+    """2 Dec night (speed): the plane scores' row counts and the squared ranges."""
+    from assistant.perception.cloud import _row_counts, _squared_ranges
+
+    rng = np.random.default_rng(1)
+    mask = rng.random((32, 5001)) < 0.3
+    assert np.array_equal(_row_counts(mask), np.count_nonzero(mask, axis=1))
+    for n in (1, 7, 1000, 80_001):
+        points = rng.normal(size=(n, 3)) * 3.0
+        assert np.array_equal(_squared_ranges(points), np.einsum("ij,ij->i", points, points))

@@ -316,3 +316,24 @@ def test_percentiles_are_numpys_bit_for_bit():
             assert np.array_equal(percentiles(columns, (2, 95, 98, 99)), np.percentile(columns, [2, 95, 98, 99], axis=0))
             assert np.array_equal(percentiles(columns, 98), np.percentile(columns, 98, axis=0))
             assert np.array_equal(covariance(columns[:, :2].T), np.cov(columns[:, :2].T))
+
+
+def test_centring_and_the_wall_traces_column_order_are_numpys_bit_for_bit():
+    """2 Dec night (speed): ``samples.centred_xy`` is ``xy - xy.mean(axis=0)`` and its mean,
+    the same bits, for an (N, 3) cloud and an (N, 2) view; ``samples._column_order`` is
+    ``np.lexsort((rows, columns))`` whether or not the rows are in image order."""
+    from assistant.perception.samples import _column_order, centred_xy
+
+    rng = np.random.default_rng(2)
+    for n in (1, 2, 5, 999, 30_001):
+        points = rng.normal(size=(n, 3)) * 2.0 + 1.0
+        for cloud in (points, points[:, :2], np.ascontiguousarray(points[::-1])):
+            xy, centre = centred_xy(cloud)
+            assert np.array_equal(centre, cloud[:, :2].mean(axis=0))
+            assert np.array_equal(xy, cloud[:, :2] - cloud[:, :2].mean(axis=0)) and xy.flags.c_contiguous
+        assert np.array_equal(centred_xy(points, np.array([0.5, -2.0]))[0], points[:, :2] - [0.5, -2.0])
+        columns = rng.integers(0, 730, n)
+        for rows in (np.sort(rng.uniform(0, 480, n)), rng.uniform(0, 480, n), np.round(rng.uniform(0, 9, n))):
+            order, sorted_columns = _column_order(columns, rows)
+            assert np.array_equal(order, np.lexsort((rows, columns)))
+            assert np.array_equal(sorted_columns, columns[order])
