@@ -4,7 +4,7 @@
 #   make notebook  set up, then start JupyterLab on notebooks/ (127.0.0.1 only, with its token)
 VENV ?= .venv
 PY := $(VENV)/bin/python
-SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libportaudio2 libfreenect-dev libfreenect-bin chromium
+SYSTEM_PACKAGES := libusb-1.0-0 libgomp1 libgl1 libegl1 libglib2.0-0 libx11-6 espeak-ng libportaudio2 sphinxtrain sphinxbase-utils pocketsphinx libfreenect-dev libfreenect-bin chromium
 STAMP := $(VENV)/.installed
 
 .PHONY: run test notebook setup warm-up system-packages bench clean
@@ -31,7 +31,8 @@ bench: setup
 setup: $(STAMP)
 
 # System libraries open3d (libusb, libgomp, GL/EGL for its module), speech output (espeak-ng),
-# the microphone and sound output (libportaudio2, for sounddevice),
+# the microphone and sound output (libportaudio2, for sounddevice), speaker enrolment
+# (SphinxTrain's bw and map_adapt, sphinxbase's sphinx_fe, pocketsphinx's mdef converter),
 # the Kinect (libfreenect-dev to build the freenect binding; libfreenect-bin for fakenect),
 # headless Chromium for the tests that render the 3D scenes (tests/viz/test_browser.py).
 system-packages:

@@ -29,6 +29,7 @@ COMMAND_MODULES = (
     "chat",
     "record",
     "listen",
+    "enrol",
     "eval",
     "doctor",
     "warmup",
@@ -36,7 +37,7 @@ COMMAND_MODULES = (
 
 
 #: commands that talk with the person (a terminal line ticking beside them would be in the way)
-INTERACTIVE_COMMANDS = frozenset({"chat", "teach", "record"})
+INTERACTIVE_COMMANDS = frozenset({"chat", "teach", "record", "enrol"})
 
 
 def build_parser() -> argparse.ArgumentParser:

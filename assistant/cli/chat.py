@@ -59,6 +59,7 @@ def add_speech_arguments(parser) -> None:
     group.add_argument("--confirm-below", type=finite_float, default=None, metavar="P",
                        help="ask \"Did you say ...?\" below this recognition confidence (default 0.45)")
     group.add_argument("--mic", default=None, help="microphone: a PortAudio device index or name")
+    group.add_argument("--speaker", metavar="NAME", help="decode with NAME's voice model (assistant enrol NAME)")
 
 
 def run(args: argparse.Namespace) -> int:

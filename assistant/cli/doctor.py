@@ -93,7 +93,7 @@ def run_checks(port: str | None = None, probe: bool = False, *, dev: str = "/dev
     checks += [check_freenect(), check_kinect_usb(sys_usb, dev, access)]
     checks += [check_portaudio(), check_module("sounddevice", "audio in/out (sounddevice)",
                                                "pip install sounddevice (needs PortAudio)"),
-               check_espeak()]
+               check_espeak(), check_enrolment_tools()]
     return checks
 
 
@@ -311,6 +311,16 @@ def check_espeak() -> Check:
     if path:
         return Check("espeak-ng", "ok", f"{path} (spoken replies)")
     return Check("espeak-ng", "warn", "not installed (spoken replies need it)", "sudo apt-get install espeak-ng")
+
+
+def check_enrolment_tools() -> Check:
+    from assistant.dialogue.speech.enrol import INSTALL_HINT, tools
+
+    missing = [name for name, path in tools().items() if path is None]
+    if missing:
+        return Check("speaker enrolment", "warn", f"{', '.join(missing)} not installed (assistant enrol needs them)",
+                     INSTALL_HINT)
+    return Check("speaker enrolment", "ok", "SphinxTrain's bw and map_adapt, sphinx_fe (assistant enrol)")
 
 
 # ---------------------------------------------------------------------------- helpers

@@ -26,6 +26,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="do not tell the recogniser each utterance's home (its rooms win near n-best ties)")
     parser.add_argument("--no-vtln", action="store_true",
                         help="pocketsphinx: no vocal tract length normalisation (no warp to the voice's pitch)")
+    parser.add_argument("--enrol", type=whole_number(10, 1000), metavar="N",
+                        help="pocketsphinx: enrol each voice first with N sentences of the enrolment script "
+                             "(assistant enrol), then decode it with its adapted model (needs SphinxTrain)")
     parser.add_argument("--rows", action="store_true", help="print every utterance")
     parser.add_argument("--shard", metavar="I/N", default="1/1",
                         help="only every N-th utterance from the I-th: run N processes in parallel, each "
@@ -47,7 +50,8 @@ def run(args: argparse.Namespace) -> int:
         report = evaluate_speech(args.asr, args.asr_model, per_kind=args.per_kind, all_voices=args.all_voices,
                                  kinds=args.kind, snrs_db=(None,) if args.clean_only else None,
                                  open_fallback=not args.no_open, shard=_shard(args.shard),
-                                 home=not args.no_home, vtln=not args.no_vtln, progress=progress_for(args))
+                                 home=not args.no_home, vtln=not args.no_vtln, enrol=args.enrol,
+                                 progress=progress_for(args))
     if args.json:
         emit_json(report)
         return 0

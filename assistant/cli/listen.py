@@ -20,6 +20,7 @@ def register(subparsers) -> None:
                         help="the home: its words join the recogniser's model and the parse uses it")
     parser.add_argument("--no-open", action="store_true",
                         help="pocketsphinx: only the home model (no general-English fallback)")
+    parser.add_argument("--speaker", metavar="NAME", help="pocketsphinx: decode with NAME's voice model (assistant enrol)")
     add_json_flag(parser)
     parser.set_defaults(handler=run)
 
@@ -35,7 +36,7 @@ def run(args: argparse.Namespace) -> int:
         world = load_world(args.world)
     options = {}
     if args.asr == "pocketsphinx":
-        options = {"world": world, "open_fallback": not args.no_open}
+        options = {"world": world, "open_fallback": not args.no_open, "speaker": args.speaker}
         if args.asr_model:
             from assistant.errors import AssistantError
 

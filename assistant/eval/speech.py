@@ -20,9 +20,11 @@ kind. Nothing is printed here (``assistant/cli/eval_speech.py`` prints).
 
 from __future__ import annotations
 
+import re
 import statistics
 import time
 from collections import defaultdict
+from pathlib import Path
 
 from assistant.eval.progress import Progress, no_progress
 
@@ -78,12 +80,14 @@ class _Parsers:
 def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int | None = None, all_voices: bool = False,
                     kinds=None, snrs_db=None, open_fallback: bool = True, confirm_below: float | None = None,
                     shard: tuple[int, int] = (1, 1), home: bool = True, vtln: bool = True,
-                    progress: Progress = no_progress) -> dict:
+                    enrol: int | None = None, progress: Progress = no_progress) -> dict:
     """The report: ``rows`` (one per utterance), ``summary`` (all), ``groups`` (by factor).
     ``shard`` (i, n): only every n-th utterance from the i-th (1-based), to run in parallel
     processes; :func:`merge_reports` joins their reports. ``home``: tell the recogniser each
     utterance's home (:meth:`~assistant.dialogue.speech.recogniser.Recogniser.use_home`). ``vtln``
-    (pocketsphinx): warp the front end to each voice's pitch (:mod:`~assistant.dialogue.speech.vtln`)."""
+    (pocketsphinx): warp the front end to each voice's pitch (:mod:`~assistant.dialogue.speech.vtln`).
+    ``enrol`` (pocketsphinx): each voice is first enrolled with that many sentences of the
+    enrolment script, spoken in that voice (:func:`enrolled_voice`), and decoded with its model."""
     from assistant.dialogue import classify
     from assistant.dialogue.speech.listener import DEFAULT_CONFIRM_BELOW
     from assistant.dialogue.speech.recogniser import make_recogniser
@@ -97,6 +101,16 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
     recogniser = make_recogniser(engine, **options)
     if engine == "pocketsphinx" and open_fallback:
         recogniser.recognise(speech_data.synthesise("hello", "en-us", 175))  # the open model is loaded
+    by_voice: dict = {}  # voice → its enrolled recogniser (with ``enrol``)
+
+    def recogniser_for(voice: str):
+        if not enrol or engine != "pocketsphinx":
+            return recogniser
+        if voice not in by_voice:
+            model = enrolled_voice(voice, enrol, progress)
+            by_voice[voice] = make_recogniser(engine, **options, speaker=str(model))
+        return by_voice[voice]
+
     parsers = _Parsers()
     threshold = DEFAULT_CONFIRM_BELOW if confirm_below is None else confirm_below
     todo = speech_data.items(per_kind, all_voices, speech_data.SNRS_DB if snrs_db is None else snrs_db, kinds)
@@ -105,9 +119,10 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
     for n, item in enumerate(todo, start=1):
         progress("speech test set", n, len(todo))
         audio = speech_data.audio_of(item)
+        hearing = recogniser_for(item.voice)
         if home:
-            recogniser.use_home(parsers(item.world).world)  # the recogniser knows the home it serves
-        heard = recogniser.recognise(audio)
+            hearing.use_home(parsers(item.world).world)  # the recogniser knows the home it serves
+        heard = hearing.recognise(audio)
         ref = item.reference
         row = {"id": item.id, "kind": item.kind, "world": item.world, "voice": item.voice, "rate": item.rate,
                "noise": item.noise, "engine": engine, "reference": ref, "transcript": heard.transcript,
@@ -120,10 +135,37 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
             parser = parsers(item.world)
             row["plan_equal"] = request_of(parser, heard.transcript) == request_of(parser, item.text)
         rows.append(row)
-    recogniser.close()
+    for r in (recogniser, *by_voice.values()):
+        r.close()
     head = {"engine": engine, "recogniser": recogniser.describe(), "per_kind": per_kind, "all_voices": all_voices,
-            "confirm_below": threshold, "home": home, "vtln": vtln, "shard": list(shard), "wall_seconds": round(time.perf_counter() - wall, 1)}
+            "confirm_below": threshold, "home": home, "vtln": vtln, "enrol": enrol, "shard": list(shard),
+            "wall_seconds": round(time.perf_counter() - wall, 1)}
     return report_of(rows, head)
+
+
+def enrolled_voice(voice: str, count: int, progress: Progress = no_progress) -> Path:
+    """The acoustic model adapted to a test voice from the first ``count`` sentences of the
+    enrolment script synthesised in it (140 and 175 words a minute in turn), built once and
+    cached (keyed by the voice, the script and the model's version). No script sentence is a
+    test sentence (``tests/dialogue/speech/test_enrol.py``)."""
+    import hashlib
+
+    from assistant.dialogue.speech.enrol import enrol, enrolment_script, speaker_model
+    from assistant.eval import speech_data
+    from assistant.fileio import cache_dir
+
+    script = enrolment_script(count)
+    key = hashlib.sha1("\n".join([voice, *script]).encode()).hexdigest()[:12]
+    data_dir = cache_dir() / "speech" / "enrolled" / key
+    name = re.sub(r"[^A-Za-z0-9_-]", "_", voice)
+    model = speaker_model(name, data_dir)
+    if not (model / "means").is_file():
+        recordings = []
+        for n, text in enumerate(script):
+            progress(f"enrolling the voice {voice}", n + 1, len(script))
+            recordings.append((speech_data.synthesise(text, voice, (140, 175)[n % 2]), text))
+        enrol(name, recordings, data_dir)
+    return model
 
 
 def report_of(rows: list[dict], head: dict) -> dict:

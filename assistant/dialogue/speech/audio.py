@@ -71,6 +71,11 @@ def speech_power(samples: np.ndarray) -> float:
     return active_power(frame_energies(samples))
 
 
+#: the noise floor the recogniser adds before decoding, in dB under the speech's power
+#: (:mod:`~assistant.dialogue.speech.sphinx`; enrolment computes its features over the same floor)
+DEFAULT_FLOOR_DB = 30.0
+
+
 def with_noise_floor(samples: np.ndarray, below_db: float, seed: int = 0, power: float | None = None) -> np.ndarray:
     """``samples`` with white noise ``below_db`` under the speech's power (``power``: that power,
     when known; default :func:`speech_power`). Fixed seed: the same input gives the same output."""

@@ -53,6 +53,7 @@ class SpeechChat:
         options = {"asr_model": args.asr_model} if getattr(args, "asr_model", None) else {}
         if getattr(args, "asr", "pocketsphinx") == "pocketsphinx":
             options["world"] = self.session.world
+            options["speaker"] = getattr(args, "speaker", None)
         self.listener = listener or Listener(getattr(args, "asr", "pocketsphinx"), **options)
         self.confirmer = Confirmer(getattr(args, "confirm_below", None) or Confirmer().below)
         say_to = getattr(args, "say_to", None)

@@ -36,10 +36,11 @@ from __future__ import annotations
 
 import threading
 import time
+from pathlib import Path
 
 import numpy as np
 
-from assistant.dialogue.speech.audio import active_power, frame_energies, to_pcm16, with_noise_floor
+from assistant.dialogue.speech.audio import DEFAULT_FLOOR_DB, active_power, frame_energies, to_pcm16, with_noise_floor
 from assistant.dialogue.speech.errors import RecogniserError, require
 from assistant.dialogue.speech.recogniser import Recognition, RecognitionStream, Recogniser
 from assistant.dialogue.speech.vtln import SpeakerPitch, pitch_hz, warp_for_pitch
@@ -58,8 +59,6 @@ DECODER_SETTINGS = {"dither": True, "seed": 1, "beam": 1e-60, "wbeam": 1e-40, "p
 OPEN_SEARCH = {"beam": 1e-48, "wbeam": 7e-29, "pbeam": 1e-48, "maxhmmpf": 3000, "maxwpf": 20, "topn": 4}
 FILLERS = frozenset({"<s>", "</s>", "<sil>", "<unk>"})
 FRAME_S = 0.01
-#: the noise floor added before decoding, in dB under the speech's power (None: none)
-DEFAULT_FLOOR_DB = 30.0
 #: how many n-best hypotheses are looked at, and how far under the first one's score one may
 #: score (a share of it: the scores are per-frame probabilities, ~0.3-0.5 here) and still replace
 #: the best words for naming the home's room rather than another home's
@@ -78,6 +77,8 @@ class PocketsphinxRecogniser(Recogniser):
     (:meth:`use_home`); ``home_margin``: how far (a share of the first n-best score) under it a
     hypothesis naming the home's room may score and still win; ``open_fallback``:
     use the general model when unsure; ``open_below``: the confidence under which it is tried;
+    ``speaker``: an enrolled speaker's name (or adapted model folder): decode with the acoustic
+    model adapted to that voice (:mod:`~assistant.dialogue.speech.enrol`);
     ``open_margin``: how much more confident its words must be to be taken; ``floor_db``: the
     noise floor added before decoding (dB under the speech, None: none); ``vtln``: warp the front
     end to the voice's pitch (:mod:`~assistant.dialogue.speech.vtln`).
@@ -88,7 +89,7 @@ class PocketsphinxRecogniser(Recogniser):
     def __init__(self, model=None, world=None, open_fallback: bool = True, open_below: float = 0.3,
                  open_margin: float = 0.3, settings: dict | None = None, asr_model=None,
                  floor_db: float | None = DEFAULT_FLOOR_DB, home_margin: float = DEFAULT_HOME_MARGIN,
-                 vtln: bool = True):
+                 vtln: bool = True, speaker: str | None = None):
         if asr_model is not None:
             raise RecogniserError("pocketsphinx uses its packaged en-US model; --asr-model is for --asr vosk")
         ps = require("pocketsphinx", "pip install pocketsphinx", RecogniserError)
@@ -96,6 +97,12 @@ class PocketsphinxRecogniser(Recogniser):
 
         self.model = model or build_home_model(world=world)
         self.settings = {**DECODER_SETTINGS, **(settings or {})}
+        self.speaker_name = speaker
+        if speaker is not None:  # the acoustic model adapted to this person (assistant enrol)
+            from assistant.dialogue.speech.enrol import enrolled_model
+
+            folder = Path(speaker) if (Path(speaker) / "means").is_file() else enrolled_model(speaker)
+            self.settings["hmm"] = str(folder)
         try:
             self._home = ps.Decoder(lm=str(self.model.lm), dict=str(self.model.dictionary), **self.settings)
         except (RuntimeError, ValueError) as error:
@@ -156,6 +163,7 @@ class PocketsphinxRecogniser(Recogniser):
         return {"engine": self.name, "home_lm": str(self.model.lm), "home_words": self.model.words,
                 "open_fallback": self.open_fallback, "open_below": self.open_below, "floor_db": self.floor_db,
                 "home_margin": self.home_margin, "home_rooms": sorted(self._rooms), "vtln": self.vtln,
+                "speaker": self.speaker_name,
                 "settings": {k: v for k, v in self.settings.items() if k != "loglevel"}}
 
     # ------------------------------------------------------------------ decoding
