@@ -115,11 +115,9 @@ def enrolled_model(name: str, data_dir: Path | None = None) -> Path:
 def training_model(cache: Path | None = None) -> Path:
     """The packaged model with a text ``mdef`` and expanded mixture weights, as SphinxTrain reads
     it (built once into the cache)."""
-    import pocketsphinx
-
     from assistant.fileio import cache_dir
 
-    packaged = Path(pocketsphinx.get_model_path()) / "en-us" / "en-us"
+    packaged = packaged_model()
     folder = Path(cache or cache_dir()) / "speech" / "sphinxtrain-en-us"
     if (folder / "mixture_weights").is_file() and (folder / "mdef.txt").is_file():
         return folder
@@ -198,8 +196,9 @@ def enrol(name: str, recordings: list[tuple[np.ndarray, str]], data_dir: Path | 
     target.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".enrol-", dir=target.parent))
     try:
-        _features(recordings, work, found["sphinx_fe"], progress)
-        _adapt(base, work, found)
+        training_files(recordings, work, found["sphinx_fe"], progress)
+        collect_statistics(base, work, found)
+        map_adapt(base, work, found)
         (work / "model" / "enrolled.json").write_text(json.dumps(
             {"name": name, "recordings": len(recordings), "when": time.time(),
              "sentences": [text for _, text in recordings]}, indent=1) + "\n")
@@ -215,7 +214,7 @@ def enrol(name: str, recordings: list[tuple[np.ndarray, str]], data_dir: Path | 
     return Enrolment(name, target, len(recordings))
 
 
-def _features(recordings, work: Path, sphinx_fe: Path, progress) -> None:
+def training_files(recordings, work: Path, sphinx_fe: Path, progress=None) -> None:
     """Feature files, control file, transcripts and dictionary for ``bw`` under ``work``."""
     from assistant.dialogue.speech.audio import DEFAULT_FLOOR_DB, with_noise_floor, write_wav
     from assistant.dialogue.speech.language_model import build_home_model, read_pronunciations
@@ -247,18 +246,29 @@ def _features(recordings, work: Path, sphinx_fe: Path, progress) -> None:
     shutil.copy(dictionary, work / "dict")
 
 
-def _adapt(base: Path, work: Path, found: dict[str, Path]) -> None:
-    """``bw`` over the recordings, then ``map_adapt`` into ``work/model`` (a decodable model)."""
+def packaged_model() -> Path:
+    """The folder of pocketsphinx's packaged en-US acoustic model."""
     import pocketsphinx
 
-    packaged = Path(pocketsphinx.get_model_path()) / "en-us" / "en-us"
-    accum, model = work / "accum", work / "model"
+    return Path(pocketsphinx.get_model_path()) / "en-us" / "en-us"
+
+
+def collect_statistics(base: Path, work: Path, found: dict[str, Path]) -> Path:
+    """``bw`` over the recordings of ``work`` (:func:`training_files`) → its ``accum`` folder."""
+    packaged = packaged_model()
+    accum = work / "accum"
     accum.mkdir()
-    model.mkdir()
     _run(found["bw"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", *FEATURES, "-dictfn", work / "dict",
          "-fdictfn", packaged / "noisedict", "-ctlfn", work / "ctl", "-lsnfn", work / "trans", "-accumdir", accum,
          "-cepdir", work, "-cepext", "mfc", "-mixwfn", base / "mixture_weights", "-meanfn", packaged / "means",
          "-varfn", packaged / "variances", "-tmatfn", packaged / "transition_matrices")
+    return accum
+
+
+def map_adapt(base: Path, work: Path, found: dict[str, Path]) -> Path:
+    """``map_adapt`` of the packaged model by ``work``'s statistics into ``work/model`` (decodable)."""
+    packaged, accum, model = packaged_model(), work / "accum", work / "model"
+    model.mkdir()
     _run(found["map_adapt"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", "-meanfn", packaged / "means",
          "-varfn", packaged / "variances", "-mixwfn", base / "mixture_weights", "-tmatfn",
          packaged / "transition_matrices", "-accumdir", accum, "-mapmeanfn", model / "means",
@@ -266,6 +276,7 @@ def _adapt(base: Path, work: Path, found: dict[str, Path]) -> None:
          "-maptmatfn", model / "transition_matrices")
     for name in ("mdef", "feat.params", "noisedict"):
         shutil.copy(packaged / name, model / name)
+    return model
 
 
 def _run(program, *args) -> None:
