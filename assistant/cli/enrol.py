@@ -9,7 +9,7 @@ from assistant.cli.common import add_json_flag, emit_json, progress_for, whole_n
 
 
 def register(subparsers) -> None:
-    from assistant.dialogue.speech.enrol import ENROL_SENTENCES
+    from assistant.dialogue.speech.enrol import ENROL_SENTENCES, SCRIPT_MAX
 
     parser = subparsers.add_parser(
         "enrol", help="fit speech recognition to one person's voice",
@@ -19,7 +19,7 @@ def register(subparsers) -> None:
                     "Needs SphinxTrain (make setup installs it).")
     parser.add_argument("name", help="the speaker's name (letters, digits, '-' and '_')")
     parser.add_argument("--script", action="store_true", help="print the sentences to read, one per line, and stop")
-    parser.add_argument("--sentences", type=whole_number(10, 200), default=ENROL_SENTENCES, metavar="N",
+    parser.add_argument("--sentences", type=whole_number(10, SCRIPT_MAX), default=ENROL_SENTENCES, metavar="N",
                         help=f"how many script sentences to read (default {ENROL_SENTENCES})")
     parser.add_argument("--audio-in", metavar="DIR",
                         help="recordings of the script instead of the microphone: DIR's .wav files in name "

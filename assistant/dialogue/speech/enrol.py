@@ -34,8 +34,10 @@ import numpy as np
 
 from assistant.dialogue.speech.errors import RecogniserError
 
-#: how many sentences a person reads (40 in the measurement, docs/speech.md)
+#: how many sentences a person reads (40 in the measurement, docs/speech.md), and the most the
+#: script holds (a script of N sentences is the first N of it, whatever N)
 ENROL_SENTENCES = 40
+SCRIPT_MAX = 200
 #: shortest and longest script sentence (words)
 SCRIPT_WORDS = (5, 14)
 #: recordings needed at the least (fewer adapt too little to be worth a model)
@@ -77,8 +79,9 @@ def require_tools() -> dict[str, Path]:
 
 
 def enrolment_script(count: int = ENROL_SENTENCES) -> list[str]:
-    """The sentences a person reads: corpus descriptions of 5–14 words whose every word the home
-    model can pronounce, spread through the corpus (the same list every time)."""
+    """The first ``count`` sentences a person reads: corpus descriptions of 5–14 words whose every
+    word the home model can pronounce, spread through the corpus (the same list every time, and
+    the first sentences the same whatever ``count``: recordings of a longer script still match)."""
     from assistant.dialogue.speech.language_model import build_home_model, read_pronunciations
     from assistant.dialogue.speech.vocabulary import corpus_sentences
 
@@ -86,7 +89,9 @@ def enrolment_script(count: int = ENROL_SENTENCES) -> list[str]:
     low, high = SCRIPT_WORDS
     pool = [s for s in dict.fromkeys(corpus_sentences())
             if low <= len(s.split()) <= high and all(w in known for w in s.split())]
-    return pool[::max(1, len(pool) // count)][:count]
+    # golden-ratio order: any first N sentences are spread through the whole corpus
+    order = sorted(range(len(pool)), key=lambda k: (k * 0.6180339887498949) % 1.0)
+    return [pool[k] for k in order[:min(count, SCRIPT_MAX)]]
 
 
 def check_name(name: str) -> str:
