@@ -77,3 +77,12 @@ def test_no_microphone_in_a_terminal_falls_back_to_text(tmp_path):
     child.expect(pexpect.EOF)
     child.close()
     assert read_audio(tmp_path / "said.wav").seconds > 2
+
+
+def test_a_speaker_who_never_enrolled_is_named_with_what_to_do(tmp_path, say_wav):
+    path = say_wav("where is my mug", rate=150)
+    for args in (["chat", "--world", "apartment", "--speech", "--speaker", "nobody", "--audio-in", str(path)],
+                 ["listen", str(path), "--speaker", "nobody"]):
+        done = run(args, tmp_path, stdin=subprocess.DEVNULL)
+        assert done.returncode == 2 and "assistant enrol nobody" in done.stderr, (args, done.stderr)
+        assert "Traceback" not in done.stderr
