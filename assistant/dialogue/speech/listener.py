@@ -88,15 +88,18 @@ class Confirmer:
     :meth:`check` takes each recognised utterance and returns ``(text_for_the_dialogue,
     question)``: the text to act on (or None) and a question to ask instead (or None). After
     a question, "yes" acts on the remembered words, "no" asks to say it again, and anything
-    else is a new utterance.
+    else is a new utterance. ``tip``: said once, with the second "no" of a conversation (the
+    robot keeps mishearing this person: enrolment would help).
     """
 
     YES = frozenset({"yes", "yeah", "yep", "correct", "right", "sure", "yes please", "that's right", "okay", "ok"})
     NO = frozenset({"no", "nope", "no thanks", "wrong", "no that's wrong"})
 
-    def __init__(self, below: float = DEFAULT_CONFIRM_BELOW):
+    def __init__(self, below: float = DEFAULT_CONFIRM_BELOW, tip: str | None = None):
         self.below = below
         self.pending: str | None = None
+        self.tip = tip
+        self.misheard = 0  # "no" answers to "Did you say …?" in this conversation
 
     def check(self, transcript: str, confidence: float) -> tuple[str | None, str | None]:
         words = " ".join(transcript.split())
@@ -105,7 +108,9 @@ class Confirmer:
             if words in self.YES:
                 return pending, None
             if words in self.NO:
-                return None, "Sorry — please say it again."
+                self.misheard += 1
+                tip = f" {self.tip}" if self.tip and self.misheard == 2 else ""
+                return None, "Sorry — please say it again." + tip
         if not words:
             return None, "Sorry, I didn't catch that. Please say it again."
         if confidence < self.below and words not in self.YES | self.NO:

@@ -55,7 +55,10 @@ class SpeechChat:
             options["world"] = self.session.world
             options["speaker"] = getattr(args, "speaker", None)
         self.listener = listener or Listener(getattr(args, "asr", "pocketsphinx"), **options)
-        self.confirmer = Confirmer(getattr(args, "confirm_below", None) or Confirmer().below)
+        tip = None if getattr(args, "speaker", None) else (
+            "If I keep mishearing you, fit me to your voice: assistant enrol YOUR-NAME, then talk with "
+            "--speaker YOUR-NAME.")
+        self.confirmer = Confirmer(getattr(args, "confirm_below", None) or Confirmer().below, tip=tip)
         say_to = getattr(args, "say_to", None)
         self.speaker = speaker or Speaker(args.voice, args.rate, say_to=say_to, play=not say_to)
         self.session.speak = self._speak

@@ -52,6 +52,16 @@ def test_unknown_engine_lists_the_known_ones():
         make_recogniser("pocketsphinx", asr_model="/tmp/model")
 
 
+def test_confirmer_suggests_enrolment_once_when_it_keeps_mishearing():
+    c = Confirmer(below=0.5, tip="Enrol your voice.")
+    answers = []
+    for _ in range(3):
+        c.check("where is my money", 0.2)
+        answers.append(c.check("no", 0.9)[1])
+    assert [a.endswith("Enrol your voice.") for a in answers] == [False, True, False]
+    assert Confirmer(below=0.5).check("where is my money", 0.2)[1].startswith("Did you say")
+
+
 def test_confirmer_asks_below_the_threshold_and_acts_on_yes():
     c = Confirmer(below=0.5)
     assert c.check("where is my mug", 0.9) == ("where is my mug", None)
