@@ -331,9 +331,10 @@ class DialogueManager:
             word = first.said if first is not None else nouns[0]
             suggest = first.category if first is not None else None
             self.pending = {"kind": "word", "word": word, "text": text, "original": said, "suggest": suggest}
-            question = f"is it {article(suggest)} {suggest}?" if suggest else \
-                "is it a table, a chair, a couch or a bed?"
-            return self._turn(said, "command", f"I don't know the word '{word}' — {question}", "clarify", "asked",
+            # a furniture word the robot knows, but no piece of this home is called so: which is it?
+            ask = (f"I don't know which of the furniture here is the {word} — is it {article(suggest)} {suggest}?"
+                   if suggest else f"I don't know the word '{word}' — is it a table, a chair, a couch or a bed?")
+            return self._turn(said, "command", ask, "clarify", "asked",
                               start, unknown=[word] + [w for w in unused if w != word], plan=plan.to_dict())
         if self.busy:
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",

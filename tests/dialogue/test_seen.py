@@ -204,7 +204,7 @@ def test_furniture_words_named_back_or_picked(services, tmp_path, apartment_worl
     assert len(set(phrases)) == len(chairs)
     m = manager(services, tmp_path, SeeingFetcher(apartment_world, [], [], True, "hexagontable_1"))
     ask = m.handle("bring me the mug from the dresser in the bedroom")
-    assert ask.reply == "I don't know the word 'dresser' — is it a table?"
+    assert ask.reply == "I don't know which of the furniture here is the dresser — is it a table?"
     which = m.handle("yes")
     assert which.reply.startswith("There are three tables in the bedroom")
     assert m.handle("the one by the chair").data["chosen"] == "hexagontable_1"
