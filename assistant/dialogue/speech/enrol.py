@@ -132,8 +132,11 @@ def training_model(cache: Path | None = None) -> Path:
     try:
         _run(found["pocketsphinx_mdef_convert"], "-text", packaged / "mdef", building / "mdef.txt")
         write_mixture_weights(building / "mixture_weights", expand_sendump(packaged / "sendump"))
-        if not folder.exists():
+        try:
             os.replace(building, folder)
+        except OSError:  # another process built it meanwhile: theirs is the same
+            if not (folder / "mixture_weights").is_file():
+                raise
     finally:
         shutil.rmtree(building, ignore_errors=True)
     return folder
