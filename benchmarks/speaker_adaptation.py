@@ -25,19 +25,17 @@ from pathlib import Path
 def adapted_settings(voice: str, method: str, count: int, work: Path) -> dict:
     """Decoder settings that use ``voice``'s adapted model (built under ``work``)."""
     from assistant.dialogue.speech import enrol
-    from assistant.eval.speech_data import synthesise
+    from assistant.eval.speech import enrolment_recordings
 
     found = enrol.require_tools()
     base = enrol.training_model()
-    script = enrol.enrolment_script(count)
-    recordings = [(synthesise(text, voice, (140, 175)[n % 2]), text) for n, text in enumerate(script)]
-    enrol.training_files(recordings, work, found["sphinx_fe"])
+    enrol.training_files(enrolment_recordings(voice, count), work, found["sphinx_fe"])
     accum = enrol.collect_statistics(base, work, found)
     if method == "map":
         return {"hmm": str(enrol.map_adapt(base, work, found))}
     packaged = enrol.packaged_model()
     solver = enrol.SPHINXTRAIN_DIR / "mllr_solve"
-    enrol._run(solver if solver.is_file() else shutil.which("mllr_solve") or "mllr_solve", "-meanfn",
+    enrol.run_tool(solver if solver.is_file() else shutil.which("mllr_solve") or "mllr_solve", "-meanfn",
                packaged / "means", "-varfn", packaged / "variances", "-outmllrfn", work / "mllr_matrix",
                "-accumdir", accum)
     return {"mllr": str(work / "mllr_matrix")}

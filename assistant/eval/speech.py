@@ -98,13 +98,17 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
     if engine == "pocketsphinx":
         options["vtln"] = vtln
     progress(f"loading the {engine} recogniser")
+    if enrol and engine != "pocketsphinx":
+        from assistant.errors import AssistantError
+
+        raise AssistantError(f"--enrol adapts pocketsphinx's acoustic model; {engine} has no enrolment")
     recogniser = make_recogniser(engine, **options)
-    if engine == "pocketsphinx" and open_fallback:
+    if engine == "pocketsphinx" and open_fallback and not enrol:  # (enrolled voices decode with their own)
         recogniser.recognise(speech_data.synthesise("hello", "en-us", 175))  # the open model is loaded
     by_voice: dict = {}  # voice → its enrolled recogniser (with ``enrol``)
 
     def recogniser_for(voice: str):
-        if not enrol or engine != "pocketsphinx":
+        if not enrol:
             return recogniser
         if voice not in by_voice:
             model = enrolled_voice(voice, enrol, progress)
@@ -146,26 +150,35 @@ def evaluate_speech(engine: str = "pocketsphinx", asr_model=None, per_kind: int 
 def enrolled_voice(voice: str, count: int, progress: Progress = no_progress) -> Path:
     """The acoustic model adapted to a test voice from the first ``count`` sentences of the
     enrolment script synthesised in it (140 and 175 words a minute in turn), built once and
-    cached (keyed by the voice, the script and the model's version). No script sentence is a
+    cached (keyed by the voice, the script and the enrolment's feature settings). No script sentence is a
     test sentence (``tests/dialogue/speech/test_enrol.py``)."""
     import hashlib
 
-    from assistant.dialogue.speech.enrol import enrol, enrolment_script, speaker_model
-    from assistant.eval import speech_data
+    from assistant.dialogue.speech.enrol import FEATURES, FRONT_END, enrol, enrolment_script, speaker_model
     from assistant.fileio import cache_dir
 
     script = enrolment_script(count)
-    key = hashlib.sha1("\n".join([voice, *script]).encode()).hexdigest()[:12]
+    key = hashlib.sha1("\n".join([voice, *script, *FRONT_END, *FEATURES]).encode()).hexdigest()[:12]
     data_dir = cache_dir() / "speech" / "enrolled" / key
     name = re.sub(r"[^A-Za-z0-9_-]", "_", voice)
     model = speaker_model(name, data_dir)
     if not (model / "means").is_file():
-        recordings = []
-        for n, text in enumerate(script):
-            progress(f"enrolling the voice {voice}", n + 1, len(script))
-            recordings.append((speech_data.synthesise(text, voice, (140, 175)[n % 2]), text))
-        enrol(name, recordings, data_dir)
+        enrol(name, enrolment_recordings(voice, count, progress), data_dir)
     return model
+
+
+def enrolment_recordings(voice: str, count: int, progress: Progress = no_progress) -> list:
+    """(samples, sentence) of the first ``count`` enrolment-script sentences spoken by the test
+    voice ``voice``, at 140 and 175 words a minute in turn (as the test set's rates)."""
+    from assistant.dialogue.speech.enrol import enrolment_script
+    from assistant.eval import speech_data
+
+    script = enrolment_script(count)
+    recordings = []
+    for n, text in enumerate(script):
+        progress(f"enrolling the voice {voice}", n + 1, len(script))
+        recordings.append((speech_data.synthesise(text, voice, (140, 175)[n % 2]), text))
+    return recordings
 
 
 def report_of(rows: list[dict], head: dict) -> dict:

@@ -130,7 +130,7 @@ def training_model(cache: Path | None = None) -> Path:
     folder.parent.mkdir(parents=True, exist_ok=True)
     building = Path(tempfile.mkdtemp(prefix=".sphinxtrain-", dir=folder.parent))
     try:
-        _run(found["pocketsphinx_mdef_convert"], "-text", packaged / "mdef", building / "mdef.txt")
+        run_tool(found["pocketsphinx_mdef_convert"], "-text", packaged / "mdef", building / "mdef.txt")
         write_mixture_weights(building / "mixture_weights", expand_sendump(packaged / "sendump"))
         try:
             os.replace(building, folder)
@@ -243,7 +243,7 @@ def training_files(recordings, work: Path, sphinx_fe: Path, progress=None) -> No
         warp = warp_for_pitch(pitch_hz(samples))  # as a whole utterance is decoded
         uid = f"r{n:03d}"
         wav = write_wav(work / f"{uid}.wav", with_noise_floor(samples, DEFAULT_FLOOR_DB))
-        _run(sphinx_fe, *FRONT_END, "-warp_type", "inverse_linear", "-warp_params", f"{warp:g}", "-mswav", "yes",
+        run_tool(sphinx_fe, *FRONT_END, "-warp_type", "inverse_linear", "-warp_params", f"{warp:g}", "-mswav", "yes",
              "-i", wav, "-o", work / f"{uid}.mfc")
         ids.append(uid)
         lines.append(f"<s> {words} </s> ({uid})")
@@ -266,7 +266,7 @@ def collect_statistics(base: Path, work: Path, found: dict[str, Path]) -> Path:
     packaged = packaged_model()
     accum = work / "accum"
     accum.mkdir()
-    _run(found["bw"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", *FEATURES, "-dictfn", work / "dict",
+    run_tool(found["bw"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", *FEATURES, "-dictfn", work / "dict",
          "-fdictfn", packaged / "noisedict", "-ctlfn", work / "ctl", "-lsnfn", work / "trans", "-accumdir", accum,
          "-cepdir", work, "-cepext", "mfc", "-mixwfn", base / "mixture_weights", "-meanfn", packaged / "means",
          "-varfn", packaged / "variances", "-tmatfn", packaged / "transition_matrices")
@@ -277,7 +277,7 @@ def map_adapt(base: Path, work: Path, found: dict[str, Path]) -> Path:
     """``map_adapt`` of the packaged model by ``work``'s statistics into ``work/model`` (decodable)."""
     packaged, accum, model = packaged_model(), work / "accum", work / "model"
     model.mkdir()
-    _run(found["map_adapt"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", "-meanfn", packaged / "means",
+    run_tool(found["map_adapt"], "-moddeffn", base / "mdef.txt", "-ts2cbfn", ".ptm.", "-meanfn", packaged / "means",
          "-varfn", packaged / "variances", "-mixwfn", base / "mixture_weights", "-tmatfn",
          packaged / "transition_matrices", "-accumdir", accum, "-mapmeanfn", model / "means",
          "-mapvarfn", model / "variances", "-mapmixwfn", model / "mixture_weights",
@@ -287,7 +287,7 @@ def map_adapt(base: Path, work: Path, found: dict[str, Path]) -> Path:
     return model
 
 
-def _run(program, *args) -> None:
+def run_tool(program, *args) -> None:
     done = subprocess.run([str(program), *map(str, args)], capture_output=True, text=True)
     if done.returncode:
         tail = (done.stderr or done.stdout).strip().splitlines()[-3:]
