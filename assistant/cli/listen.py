@@ -36,13 +36,15 @@ def run(args: argparse.Namespace) -> int:
         world = load_world(args.world)
     options = {}
     if args.asr == "pocketsphinx":
-        options = {"world": world, "open_fallback": not args.no_open, "speaker": args.speaker}
+        options = {"world": world, "open_fallback": not args.no_open}
         if args.asr_model:
             from assistant.errors import AssistantError
 
             raise AssistantError("--asr-model is the folder of a vosk model: add --asr vosk")
     elif args.asr_model:
         options = {"asr_model": args.asr_model}
+    if args.speaker is not None:
+        options["speaker"] = args.speaker  # vosk refuses it with what to do
     listener = Listener(args.asr, **options)
     try:
         return _listen(args, listener, CommandParser.load(None, world=world))

@@ -91,3 +91,11 @@ def test_where_questions_are_compared_as_the_dialogue_reads_them():
     command = request_of(parser, "go into the bedroom and turn left the mug is on the table")
     assert command["intent"] == "command" and command["object"] == "mug" and command["nodes"]
     assert request_of(parser, "where leave my statue")["intent"] == "command"  # not heard as a question
+
+
+def test_enrolment_is_refused_for_an_engine_without_it():
+    from assistant.errors import AssistantError
+    from assistant.eval.speech import evaluate_speech
+
+    with pytest.raises(AssistantError, match="vosk has no enrolment"):
+        evaluate_speech("vosk", "/nowhere", per_kind=1, enrol=10)

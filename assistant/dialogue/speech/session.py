@@ -53,7 +53,8 @@ class SpeechChat:
         options = {"asr_model": args.asr_model} if getattr(args, "asr_model", None) else {}
         if getattr(args, "asr", "pocketsphinx") == "pocketsphinx":
             options["world"] = self.session.world
-            options["speaker"] = getattr(args, "speaker", None)
+        if getattr(args, "speaker", None) is not None:
+            options["speaker"] = args.speaker  # vosk refuses it with what to do
         self.listener = listener or Listener(getattr(args, "asr", "pocketsphinx"), **options)
         tip = None if getattr(args, "speaker", None) else (
             "If I keep mishearing you, fit me to your voice: assistant enrol YOUR-NAME, then talk with "

@@ -50,7 +50,10 @@ class VoskRecogniser(Recogniser):
 
     name = "vosk"
 
-    def __init__(self, asr_model=None, phrases=None, world=None, open_fallback=None):
+    def __init__(self, asr_model=None, phrases=None, world=None, open_fallback=None, speaker=None):
+        if speaker is not None:
+            raise RecogniserError("--speaker is a voice enrolled for pocketsphinx (assistant enrol); "
+                                  "vosk has no enrolment: leave --speaker out with --asr vosk")
         folder = check_model_dir(asr_model)
         vosk = require("vosk", "pip install vosk", RecogniserError)
         vosk.SetLogLevel(-1)

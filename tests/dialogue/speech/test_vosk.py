@@ -24,6 +24,11 @@ def test_missing_and_not_a_model(tmp_path):
         check_model_dir(tmp_path)
 
 
+def test_an_enrolled_speaker_is_refused_with_what_to_do(tmp_path):
+    with pytest.raises(RecogniserError, match="leave --speaker out with --asr vosk"):
+        VoskRecogniser(tmp_path, speaker="ann")
+
+
 def test_broken_model_is_reported(tmp_path):
     pytest.importorskip("vosk")
     (tmp_path / "am").mkdir()
