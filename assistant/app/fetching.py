@@ -139,7 +139,7 @@ def _judge_end(world, scene: str, obj: str | None, outcome, frame, detector, fur
     detected = bool(obj) and any(s.name == obj for s in in_view)
     if not outcome.success:
         failure = outcome.status.value
-    elif not (is_visible(visibility) if visibility is not None else outcome.success):
+    elif obj and not (is_visible(visibility) if visibility is not None else outcome.success):
         failure = Status.NOT_VISIBLE.value
     else:
         failure = None

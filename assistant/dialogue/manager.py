@@ -34,6 +34,7 @@ from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.objects import is_object_word
+from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.rooms import unknown_room_named
 from assistant.grounding.vocabulary import FURNITURE_WORDS, STRUCTURE_REFERENCES
 
@@ -339,6 +340,10 @@ class DialogueManager:
         if self.busy:
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
+        if is_motion_plan(plan):  # "turn around", "back up a little": no room to ask for
+            reply = describe_motion(plan.nodes)
+            return self._start_job("fetch", said, reply[0].upper() + reply[1:] + ".", text, None, None, start,
+                                   command=text, motion=True)
         room = plan.room
         if room is None:
             seen = self.memory.recall(self.world.name, obj) if obj else None

@@ -228,6 +228,12 @@ class ChatSession:
                     continue
                 try:
                     turn = self.manager.handle(line)
+                    if self.scripted and (turn.outcome == "busy" or (turn.action == "leave" and self.manager.busy)):
+                        # lines read from a file or a pipe come faster than the robot moves: a
+                        # command (or the goodbye) waits for the task before it, as a person would
+                        self.manager.wait()
+                        if turn.outcome == "busy":
+                            turn = self.manager.handle(line)
                     self._record(turn)
                     if turn.reply:
                         self._say(turn.reply)
@@ -249,6 +255,11 @@ class ChatSession:
             if self.view is not None:
                 self.view.close()
         return 0
+
+    @property
+    def scripted(self) -> bool:
+        """Lines come from a file or a pipe, not a person at a terminal or a microphone."""
+        return not self.interactive and self.read_line is None
 
     def _start_status(self) -> None:
         """While the robot works, a ticking line above the typed prompt says what it is doing

@@ -67,6 +67,9 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
     if result.failure and result.failure != "not_visible":
         reply = f"Sorry, I couldn't do it: {message or result.failure}."
         return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start), pending
+    if (getattr(result.task, "details", None) or {}).get("motion"):  # "turn around": said what it did
+        return Turn(text, "command", f"Done — I've {message}.", "fetch", "success", data,
+                    time.perf_counter() - start), pending
     if item is not None:
         phrase = furniture_phrase(ctx.services.describer, ctx.world, ctx.scene, item)
         where = f"{phrase} in the {item.room}"

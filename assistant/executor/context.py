@@ -121,8 +121,9 @@ class TaskContext:
     def face_point(self, x_m: float, y_m: float) -> ExecutionResult:
         return self.step(self.navigator.follower.face_point(self.robot, x_m, y_m, localizer=self.localizer))
 
-    def back_off(self) -> ExecutionResult:
-        return self.step(self.navigator.follower.back_off(self.robot, localizer=self.localizer))
+    def back_off(self, distance_m: float = 0.25) -> ExecutionResult:
+        """Reverse straight ``distance_m`` (metres)."""
+        return self.step(self.navigator.follower.back_off(self.robot, distance_m, localizer=self.localizer))
 
     def look_around(self, on_frame: Callable[[DepthFrame, Pose2D], bool | None]) -> ExecutionResult:
         """A full turn on the spot, handing each stop's frame to ``on_frame`` (see

@@ -47,7 +47,8 @@ from assistant.executor.outcome import ExecutionResult, ExecutionStatus
 from assistant.executor.reports import FetchResult, NodeReport
 from assistant.executor.rooms import room_of
 from assistant.executor.sensing import entity_centre, environment_items
-from assistant.executor.spoken import nearest_first, room_from_here, spoken_node
+from assistant.executor.spoken import nearest_first, room_from_here, run_moves, spoken_node
+from assistant.grounding.motion import is_motion_plan
 from assistant.executor.survey import Surveyor
 from assistant.executor.viewing import in_view, viewing_poses
 from assistant.geometry import Pose2D, point_in_polygon, wrap_angle
@@ -197,6 +198,9 @@ class FetchTask:
 
     def _run(self, plan, reports: list[NodeReport], out: dict) -> FetchResult:
         ctx = self.ctx
+        if is_motion_plan(plan):  # "turn around", "back up a little": where the robot is, nothing else
+            status, message = run_moves(ctx, plan, reports)
+            return FetchResult(status, message, details={"motion": True}, **out)
         room = self._target_room(plan, out)
         if isinstance(room, FetchResult):
             return room

@@ -10,6 +10,8 @@ angle, "stop", passing furniture.
   :data:`~assistant.grounding.amounts.STEP_M`) or a turn with an angle ("turn left 90 degrees")
   as a pose to drive to, from the robot's pose.
 * :func:`passing_goal` — "pass the couch": a pose on the couch's far side, seen from the robot.
+* :func:`run_moves` — a command of moves alone ("turn around", "back up a little";
+  :func:`~assistant.grounding.motion.is_motion_plan`), carried out where the robot is.
 """
 
 from __future__ import annotations
@@ -22,9 +24,11 @@ from assistant.executor.outcome import ExecutionStatus
 from assistant.executor.reports import NodeReport
 from assistant.executor.sensing import entity_centre
 from assistant.geometry import Pose2D, wrap_angle
+from assistant.grounding.motion import describe_motion, reverses
 from assistant.rdt import NO_TARGET
 
-__all__ = ["PASSAGE_WIDTH_M", "amount_goal", "nearest_first", "passing_goal", "room_from_here", "said_side", "spoken_node"]
+__all__ = ["PASSAGE_WIDTH_M", "amount_goal", "nearest_first", "passing_goal", "room_from_here", "run_moves",
+           "said_side", "spoken_node"]
 
 #: a room narrower than this (metres, its bounding box's short side) is a passage
 PASSAGE_WIDTH_M = 1.6
@@ -125,3 +129,26 @@ def spoken_node(ctx, chooser, node, room: str):
 def nearest_first(entities, pose: Pose2D) -> list:
     """``entities`` ordered by the distance of their centres from ``pose``."""
     return sorted(entities, key=lambda e: math.dist(entity_centre(e), (pose.x, pose.y)))
+
+
+def run_moves(ctx, plan, reports: list[NodeReport]) -> tuple[ExecutionStatus, str]:
+    """Carry out a plan of moves alone from where the robot is, node by node (a short move back
+    reverses, :func:`~assistant.grounding.motion.reverses`; the rest as :func:`amount_goal`
+    says); ``(status, message)`` — the first node that could not be carried out ends it."""
+    for node in plan.nodes:
+        rdt = node.rdts[0]
+        report = NodeReport(str(rdt), "dynamic", ExecutionStatus.SUCCESS.value)
+        reports.append(report)
+        if reverses(node):
+            moved = ctx.back_off(node.distance_m)
+        else:
+            pose = ctx.pose()
+            goal = amount_goal(pose, rdt.direction, node.distance_m, node.degrees)
+            report.move_to = [round(goal.x, 3), round(goal.y, 3), round(goal.theta, 4)]
+            moved = ctx.turn_to(goal.theta) if node.distance_m is None else ctx.go_to((goal.x, goal.y), goal.theta)
+        report.status, report.message = moved.status.value, moved.message
+        ctx.event("node", report=report)
+        if moved.status is not ExecutionStatus.SUCCESS:
+            said = describe_motion([node])
+            return moved.status, f"could not finish {said}: {moved.message}"
+    return ExecutionStatus.SUCCESS, describe_motion(plan.nodes, done=True)

@@ -26,7 +26,10 @@ class _StandInParser:
     def parse(self, text):
         if text == TEXT:
             return _Parsed(GroundingPlan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case"))
-        return _Parsed(GroundingPlan())
+        from assistant.grounding.motion import read_motion
+
+        moves = read_motion(text.split())  # the parser's own reading of moves alone
+        return _Parsed(GroundingPlan(nodes=moves, kind="dynamic") if moves else GroundingPlan())
 
 
 @pytest.fixture(scope="module")
@@ -78,6 +81,26 @@ def test_fetch_ends_in_one_result_with_the_contract_fields(fetcher, apartment):
 def test_a_failed_fetch_says_why(fetcher, apartment):
     result = fetcher.fetch("go dance", apartment, "original", "oracle")
     assert result.status is Status.PARSE and result.failure == "parse" and not result.data["success"]
+
+
+def test_moves_alone_are_carried_out_where_the_robot_is(fetcher, apartment):
+    """"turn around", "back up": no room entered, no look around; a short move back reverses."""
+    import math
+
+    start = apartment.start
+    result = fetcher.fetch("turn around", apartment, "original", "oracle")
+    assert result.success and result.data["failure"] is None and result.task.details["motion"]
+    x, y, theta = result.data["true_final_pose"]
+    assert math.hypot(x - start.x, y - start.y) < 0.1
+    assert abs(math.remainder(theta - (start.theta + math.pi), 2 * math.pi)) < math.radians(10)
+    assert result.task.message == "turned around"
+    back = fetcher.fetch("back up a little", apartment, "original", "oracle")
+    x, y, theta = back.data["true_final_pose"]
+    heading = (math.cos(start.theta), math.sin(start.theta))
+    moved = ((x - start.x) * heading[0] + (y - start.y) * heading[1])
+    assert back.success and moved == pytest.approx(-0.5, abs=0.1)  # backwards, still facing ahead
+    assert abs(math.remainder(theta - start.theta, 2 * math.pi)) < math.radians(10)
+    assert back.data["sim_seconds"] < 10  # no survey turn
 
 
 def test_a_stopped_fetch_ends_stopped_at_once(fetcher, apartment):

@@ -163,3 +163,22 @@ def test_bye_ends_the_chat(tmp_path):
     child.close()
     assert child.exitstatus == 0
     assert [t["intent"] for t in transcript(tmp_path)["turns"]] == ["bye"]
+
+
+def test_a_chat_read_from_a_pipe_takes_each_command_after_the_last(tmp_path):
+    """Lines from a file come faster than the robot moves: each command waits for the task
+    before it (no "I'm still busy"), and the goodbye comes last."""
+    import subprocess
+
+    env = dict(os.environ, ASSISTANT_DATA=str(tmp_path / "data"), PYTHONWARNINGS="ignore")
+    run = subprocess.run([sys.executable, "-m", "assistant", "chat", "--world", "apartment", "--perception",
+                          "oracle"], input="turn around\nback up a little\nbye\n", capture_output=True,
+                         text=True, cwd=str(ROOT), env=env, timeout=240)
+    out = run.stdout
+    assert run.returncode == 0, run.stderr
+    assert "still busy" not in out
+    order = ["Turning around.", "Done — I've turned around.", "Backing up 0.5 m.", "Done — I've backed up 0.5 m.",
+             "Goodbye."]
+    places = [out.find(s) for s in order]
+    assert all(p >= 0 for p in places) and places == sorted(places), out
+    assert out.rstrip().endswith("Goodbye."), out

@@ -240,3 +240,30 @@ def test_the_robot_says_what_it_is_doing_and_answers_what_it_cannot_do(services,
                          ("how are you", "smalltalk"), ("good robot", "thanks")):
         turn = m.handle(said)
         assert turn.intent == intent and "don't know the word" not in turn.reply, (said, turn.reply)
+
+
+def test_moves_alone_are_carried_out_and_said_back(services, tmp_path):
+    """"turn left" turns the robot — no "which room?" — and the end says what it did."""
+    from types import SimpleNamespace
+
+    from assistant.app import Result, Status
+
+    texts = []
+
+    def turned(text, world, scene, on_event):
+        texts.append(text)
+        data = {"success": True, "failure": None, "final_pose": [5.0, 0.0, -1.57],
+                "executor": {"status": "success", "message": "turned left, then moved forward 1 m",
+                             "target_furniture": None}}
+        return Result("fetch", Status.SUCCESS, data["executor"]["message"], data,
+                      task=SimpleNamespace(details={"motion": True}), object=None)
+
+    m = make(services, tmp_path, turned)
+    turn = m.handle("turn left and go forward")
+    assert (turn.action, turn.outcome, turn.reply) == ("fetch", "started", "Turning left, then moving forward 1 m.")
+    final = m.wait(10)
+    assert final.outcome == "success" and final.reply == "Done — I've turned left, then moved forward 1 m."
+    assert texts == ["turn left and go forward"]
+    assert m.handle("turn around").reply == "Turning around."
+    m.wait(10)
+    assert m.handle("turn left at the door").reply != "Turning left."  # a landmark: not a move alone

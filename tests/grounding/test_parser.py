@@ -79,3 +79,17 @@ def test_too_long_a_command_is_refused_with_a_reason(parser):
 def test_a_typo_the_tagger_corrects_is_grounded_as_its_correction(parser):
     result = parser.parse("go to the bedroom, the mug is on the tabel next to the bed")
     assert result.plan.node_strings == ["bed-beside-table"] and result.plan.unused == []
+
+
+@pytest.mark.parametrize("text, nodes", [
+    ("turn left", ["move-left-non"]),
+    ("turn around", ["move-left-non"]),
+    ("back up a little", ["move-back-non"]),
+    ("go forward two meters and then turn right", ["move-front-non", "move-right-non"]),
+])
+def test_a_command_of_moves_alone_is_a_motion_plan(parser, text, nodes):
+    """"turn left" alone turns the robot; it is not the room on the left (grounders' reading)."""
+    plan = parser.parse(text).plan
+    assert plan.node_strings == nodes and plan.room is None and plan.object is None
+    assert plan.flags[0] == "motion" and plan.kind == "dynamic"
+    assert all(n.distance_m is not None or n.degrees is not None for n in plan.nodes)
