@@ -235,7 +235,8 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
     m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
         re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
     if m:
-        noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on)\b", "", m.group(1)).strip()
+        noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on|anywhere|somewhere|everywhere|around|"
+                      r"lately|recently|today|yesterday|here|there|too|at all)\b", "", m.group(1)).strip()
         found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
         if found is not None:  # any thing can be asked about (issue 16)
             return found.kind, None

@@ -38,6 +38,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
+    ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
@@ -66,6 +67,20 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"brilliant|excellent|wonderful|lovely)( robot)?$")),
     ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),
 ]
+
+#: questions about the home's furniture, by kind (dialogue.inventory): what is in a room; is there
+#: a piece; how many
+_IN_ROOM = (r"(?: (?:in|inside) (?:the|my|our|this) [a-z ]+| here| in here| around here| at home|"
+            r" in (?:the|this|my|our) (?:house|home|apartment|flat|place))?")
+_LEAD = r"^(?:(?:and|so|also|um|uh|er|well|then|oh|ok|okay|now|tell me) )*" + ADDRESS
+FURNITURE_QUESTIONS = (
+    _LEAD + r"(?:what|whats|which) (?:furniture|things|stuff|pieces of furniture)? ?(?:is |are )?"
+    r"(?:there )?(?:in|inside) (?:the|my|our|this) [a-z ]+$",
+    _LEAD + r"(?:is|are) there (?P<what>[a-z ]+?)" + _IN_ROOM + r"$",
+    _LEAD + r"how many (?P<what>[a-z ]+?) (?:are there|are|is there|do we have|do i have|do you know of|"
+    r"can you see|do you see|have we got|have i got)" + _IN_ROOM + r"$",
+)
+RULES = [(name, FURNITURE_QUESTIONS if patterns is None else patterns) for name, patterns in RULES]
 
 _COMPILED = [(name, tuple(re.compile(p) for p in patterns)) for name, patterns in RULES]
 
@@ -127,7 +142,10 @@ def teach_phrase(text: str) -> str | None:
 
 
 #: intents that are always a new request, whatever question is pending
-NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home"})
+#: intents that are never an answer to the robot's question: they drop it and are handled as
+#: themselves ("bye" while it asks "which table?")
+NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
+                          "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

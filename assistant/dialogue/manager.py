@@ -25,7 +25,8 @@ import time
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         unused_mentions)
-from assistant.dialogue.intents import NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, classify, teach_phrase
+from assistant.dialogue.intents import NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, Intent, classify, teach_phrase
+from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
@@ -36,7 +37,8 @@ from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.objects import is_object_word
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.rooms import unknown_room_named
-from assistant.grounding.vocabulary import FURNITURE_WORDS, STRUCTURE_REFERENCES
+from assistant.grounding.objects import singular
+from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
 
 class DialogueManager:
     """Conversation state for one person and one home.
@@ -155,6 +157,8 @@ class DialogueManager:
             return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
                               if doing is None else f"I'm {doing[0]} ({doing[1]:.0f} s so far). Say \"stop\" to "
                               "stop me.", start=start)
+        if name == "furniture":
+            return self._furniture(text, intent, start)
         if name in ("where", "where_dynamic"):
             return self._where(text, intent, start)
         if name == "teach":
@@ -190,6 +194,25 @@ class DialogueManager:
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
         """(known object named in the text, or None; the unknown noun asked about, or None)."""
         return named_object(norm, self.world, plan_object)
+
+    def _furniture(self, text: str, intent, start: float) -> Turn:
+        """"what's in the bedroom?", "is there a couch in the living room?", "how many chairs …?"
+        (:mod:`~assistant.dialogue.inventory`); a thing that is not furniture is a where-question."""
+        kind, what = furniture_asked(intent.text)
+        furniture = self.world.scene(self.scene).furniture
+        if what and what not in ANYTHING and not matching(furniture, what) \
+                and canonical_word(singular(what)) not in FURNITURE_WORDS:
+            if self._object_in(intent.text)[0] is not None:  # "is there a mug in the bedroom?"
+                return self._where(text, Intent("where", intent.text), start)
+            return self._command(text, start)
+        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+        missing = unknown_room_named(intent.text.split(), self.world) if room is None else None
+        if missing is not None:
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(text, "furniture", f"There is no {missing} here; the rooms are {rooms}.", "answer",
+                              "answered", start, unknown_room=missing)
+        reply = furniture_answer(furniture, self.rooms, kind, what, room)
+        return self._turn(text, "furniture", reply, "answer", "answered", start, room=room, asked=what or None)
 
     def _where(self, text: str, intent, start: float) -> Turn:
         obj, unknown = self._object_in(intent.text)
@@ -345,6 +368,20 @@ class DialogueManager:
             return self._start_job("fetch", said, reply[0].upper() + reply[1:] + ".", text, None, None, start,
                                    command=text, motion=True)
         room = plan.room
+        if room is None and not obj and plan.nodes and plan.nodes[-1].target != NO_TARGET:
+            # "go to the couch": the rooms that have one (a kind word said narrows them: "coffee table")
+            node = plan.nodes[-1]
+            items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]
+            kinds = [f for f in items if any(d in f.model.split() for d in node.descriptors)]
+            homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
+            if len(homes) == 1:
+                room, text = homes[0], f"{text} in the {homes[0]}"
+            elif homes and not force:
+                self.pending = {"kind": "room", "text": text, "original": said}
+                word = " ".join([*node.descriptors, node.support or node.target]) if kinds else node.target
+                return self._turn(said, "command", f"Which {word} — the one in the "
+                                  + _join([f"the {r}" for r in homes], "or")[4:] + "?", "clarify", "asked",
+                                  start, missing="room", plan=plan.to_dict())
         if room is None:
             seen = self.memory.recall(self.world.name, obj) if obj else None
             if seen is not None and seen.room and not plan.nodes and not mentions:
@@ -480,7 +517,7 @@ class DialogueManager:
         """Whether an answer to a question is rather a new request: it names an object, a place
         or a move of its own ("bring me the mug", "go to the kitchen")."""
         plan = self.services.parser(self.world).parse(text).plan
-        return bool(plan.object or plan.nodes or unknown_room_named(text.lower().split(), self.world))
+        return bool(plan.object or plan.nodes or plan.room or unknown_room_named(text.lower().split(), self.world))
 
     def _choose(self, norm: str, text: str, p: dict) -> int | None:
         return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)

@@ -112,6 +112,9 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
         return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start), pending
     if item is not None:
         where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
+    elif message.startswith("in the "):  # a room with nothing to face ("go to the hallway")
+        return Turn(text, "command", f"I'm here, {message}.", "fetch", "success", data,
+                    time.perf_counter() - start), pending
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                 time.perf_counter() - start), pending
 

@@ -12,8 +12,10 @@ from dataclasses import dataclass, replace
 from assistant.errors import AssistantError
 from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
+from assistant.grounding.destination import said_destination
 from assistant.grounding.motion import read_motion
-from assistant.grounding.rooms import first_named_room, named_room_groundings, side_room_groundings
+from assistant.grounding.rooms import (first_named_room, named_room_groundings, room_names_of,
+                                       side_room_groundings)
 from assistant.grounding.said import said_reference_groundings
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
@@ -105,10 +107,15 @@ class CommandParser:
                                  "say it as several shorter commands")
         corrections = dict(getattr(analysis, "corrections", {}) or {})
         records, groundings, plan = self.ground_tree(analysis.tree, corrections)
-        moves = read_motion([corrections.get(str(t), str(t)) for t in analysis.tokens])
+        words = [corrections.get(str(t), str(t)) for t in analysis.tokens]
+        moves = read_motion(words)
         if moves is not None:  # "turn left", "back up a little": the robot's own moves, nothing else
             plan = GroundingPlan(nodes=moves, kind="dynamic", flags=["motion"])
             return ParseResult(analysis, records, groundings, finish_flags(plan, words=len(analysis.tokens)))
+        if not plan.nodes and plan.object is None:  # "go to the couch": the furniture is the place
+            said = said_destination(words, room_names_of(self.world))
+            if said is not None:
+                plan.nodes, plan.support, plan.kind = [said], said.support, "static"
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
                                    analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)

@@ -1,0 +1,47 @@
+"""A piece of furniture said as the place to go: "go to the couch", "walk over to the desk in the
+office", "take me to the coffee table".
+
+The corpus descriptions say where a thing is; a person also just sends the robot to a piece of
+furniture, and the chunker reads "go to the couch" as a room phrase that grounds to nothing.
+:func:`said_destination` reads such a command — a verb of going, "to"/"towards"/"up to"/"next to",
+the furniture (its size, shape and kind words kept as descriptors), and at most the room it is in
+— into the node the fetch task faces ("room-center-couch"). Anything else in the words and it
+gives None: the grounders' reading stands.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from assistant.grounding.types import RDTNode
+from assistant.grounding.vocabulary import DESCRIPTORS, canonical_word, furniture_category, said_descriptors
+
+__all__ = ["said_destination"]
+
+_GO = r"(?:go|walk|drive|head|move|come|get|roll|navigate|take me|bring me|lead me|show me the way)"
+_TO = r"(?:back |over |right |straight )*(?:to|towards|toward|up to|next to|near|over to|in front of|close to)"
+_DET = r"(?:the|my|your|our|that|this)"
+_PATTERN = re.compile(r"^(?:(?:please|robot|okay|ok|now|just|um|uh|can you|could you|would you|will you) )*"
+                      + _GO + r" " + _TO + r" " + _DET + r" (?P<thing>[a-z ]+?)"
+                      r"(?: (?:in|inside) (?:the|my|our) [a-z ]+)?(?: please| now| for me)*$")
+
+
+def said_destination(words: Sequence[str], rooms: Sequence[str] = ()) -> RDTNode | None:
+    """The furniture node of a "go to the couch" command (see the module), or None. ``rooms``:
+    the home's room names, so a room said after the furniture is not read as part of it."""
+    text = " ".join(str(w).strip().lower() for w in words if str(w).strip() and str(w) not in ",.!?")
+    m = _PATTERN.match(text)
+    if m is None:
+        return None
+    thing = m.group("thing").split()
+    if not thing:
+        return None
+    head = canonical_word(thing[-1])
+    category = furniture_category(head)
+    if category is None or any(w not in DESCRIPTORS and canonical_word(w) != head for w in thing[:-1]):
+        return None
+    if any(r in " ".join(thing) for r in rooms):
+        return None
+    return RDTNode(category, support=head if head != category else category,
+                   descriptors=said_descriptors(thing[:-1]))
