@@ -38,6 +38,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
+    ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
+                   r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
+                   r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",
+                   r"\bwhere (?:have you seen|did you see) (?:things|everything|stuff)\b")),
     ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
@@ -145,11 +149,13 @@ def teach_phrase(text: str) -> str | None:
 #: intents that are never an answer to the robot's question: they drop it and are handled as
 #: themselves ("bye" while it asks "which table?")
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
-                          "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude"})
+                          "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
+                          "seen_list"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
-           "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching"}
+           "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching", "check",
+           "search", "explore", "visit", "inspect", "peek", "see"}
 
 #: phrases that name no place ("teach me something")
 VAGUE_PHRASES = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}

@@ -40,6 +40,10 @@ from assistant.grounding.rooms import unknown_room_named
 from assistant.grounding.objects import singular
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
 
+#: the most things "what did you see?" lists
+SEEN_LIST_MAX = 4
+
+
 class DialogueManager:
     """Conversation state for one person and one home.
 
@@ -159,6 +163,8 @@ class DialogueManager:
                               "stop me.", start=start)
         if name == "furniture":
             return self._furniture(text, intent, start)
+        if name == "seen_list":
+            return self._seen_list(text, start)
         if name in ("where", "where_dynamic"):
             return self._where(text, intent, start)
         if name == "teach":
@@ -194,6 +200,25 @@ class DialogueManager:
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
         """(known object named in the text, or None; the unknown noun asked about, or None)."""
         return named_object(norm, self.world, plan_object)
+
+    def _seen_list(self, text: str, start: float) -> Turn:
+        """"what did you see?": the things the robot remembers in this home, latest first."""
+        seen = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
+        if not seen:
+            return self._turn(text, "seen_list", "I haven't seen any of your things here yet — ask me to look for "
+                              "something.", start=start)
+        parts, ages = [], []
+        for s in seen[:SEEN_LIST_MAX]:
+            place = s.phrase or (f"on the {s.furniture_word}" if s.furniture_word else "")
+            where = " ".join(p for p in (place, f"in the {s.room}" if s.room else "") if p)
+            parts.append(f"your {s.object} {where}".strip())
+            ages.append(self.memory.age(s))
+        if len(set(ages)) > 1:  # each with its own time
+            parts = [f"{p} ({age})" for p, age in zip(parts, ages)]
+        when = f", {ages[0]}" if len(set(ages)) == 1 else ""
+        more = f" — and {len(seen) - SEEN_LIST_MAX} more" if len(seen) > SEEN_LIST_MAX else ""
+        return self._turn(text, "seen_list", f"I've seen{when}: {_join(parts)}{more}.", start=start,
+                          objects=[s.object for s in seen])
 
     def _furniture(self, text: str, intent, start: float) -> Turn:
         """"what's in the bedroom?", "is there a couch in the living room?", "how many chairs …?"

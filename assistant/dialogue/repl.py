@@ -237,6 +237,8 @@ class ChatSession:
                     self._record(turn)
                     if turn.reply:
                         self._say(turn.reply)
+                    if self.scripted and turn.outcome == "stopped":  # its "I've stopped." before the next line
+                        self.manager.wait(10.0)
                     if turn.action == "teach" and turn.outcome == "started":
                         self._teach(turn)
                     if turn.action == "leave":  # "bye": the reply said goodbye

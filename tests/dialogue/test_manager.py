@@ -267,3 +267,23 @@ def test_moves_alone_are_carried_out_and_said_back(services, tmp_path):
     assert m.handle("turn around").reply == "Turning around."
     m.wait(10)
     assert m.handle("turn left at the door").reply != "Turning left."  # a landmark: not a move alone
+
+
+def test_what_did_you_see_lists_the_things_remembered(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert "haven't seen any of your things" in m.handle("what did you see?").reply
+    m.memory.remember("apartment", "mug", "bedroom", "hexagontable_1", "table", "on the table by the chair")
+    m.memory.remember("apartment", "keys", "living room", None, None, None)
+    turn = m.handle("what have you seen so far")
+    assert turn.intent == "seen_list"
+    assert turn.reply.startswith("I've seen, just now: your keys in the living room and your mug on the table by "
+                                 "the chair in the bedroom") or "your mug on the table by the chair in the bedroom" in turn.reply
+
+
+def test_a_pending_question_gives_way_to_a_goodbye_or_a_new_place(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
+    assert m.handle("go to the living room").reply == "Going to the living room."
+    m.wait(10)
+    assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
+    assert m.handle("thanks, bye").action == "leave"
