@@ -36,6 +36,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"come and find me)( please| robot| now)*$",)),
     ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
+    # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
+    ("no_arm", (r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:put|place|drop|set down|"
+                r"carry|throw|pour|wash|clean|tidy|cook|open|close|shut|lock|unlock|fold|water|feed|push|lift|pick up)"
+                r" (?!(?:me|us|to)\b)[a-z]",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
@@ -150,7 +154,7 @@ def teach_phrase(text: str) -> str | None:
 #: themselves ("bye" while it asks "which table?")
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
-                          "seen_list"})
+                          "seen_list", "no_arm"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -53,6 +53,8 @@ class DialogueManager:
     executor's raw events (the 3D view draws them).
     """
 
+    _redirected = False  # the command being handled stopped a search for the thing it names
+
     def __init__(self, world="apartment", scene: str = "original", services: Services | None = None,
                  memory: ObjectMemory | None = None, say=None, on_event=None, on_finish=None, on_pose=None):
         from assistant.world import load_world
@@ -337,6 +339,14 @@ class DialogueManager:
         return text
 
     def _command(self, text: str, start: float, force: bool = False, original: str | None = None) -> Turn:
+        self._redirected = False
+        turn = self._command_turn(text, start, force, original)
+        if self._redirected and turn.reply:  # a search stopped for what the person just told
+            turn.reply = f"OK, I'll stop searching. {turn.reply}"
+            self.last_said = turn.reply
+        return turn
+
+    def _command_turn(self, text: str, start: float, force: bool, original: str | None) -> Turn:
         said = original or text
         text = self._substitute(text)
         parsed = self.services.parser(self.world).parse(text)
@@ -385,7 +395,11 @@ class DialogueManager:
                    if suggest else f"I don't know the word '{word}' — is it a table, a chair, a couch or a bed?")
             return self._turn(said, "command", ask, "clarify", "asked",
                               start, unknown=[word] + [w for w in unused if w != word], plan=plan.to_dict())
-        if self.busy:
+        if self.busy and obj is not None and obj == self.worker.searching_for and (plan.room or plan.nodes):
+            # "the remote is on the coffee table" while the robot searches for the remote: go there
+            self.worker.stop(quiet=True)
+            self._redirected = True
+        elif self.busy:
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
         if is_motion_plan(plan):  # "turn around", "back up a little": no room to ask for
@@ -393,7 +407,8 @@ class DialogueManager:
             return self._start_job("fetch", said, reply[0].upper() + reply[1:] + ".", text, None, None, start,
                                    command=text, motion=True)
         room = plan.room
-        if room is None and not obj and plan.nodes and plan.nodes[-1].target != NO_TARGET:
+        remembered = self.memory.recall(self.world.name, obj) if obj else None
+        if room is None and remembered is None and plan.nodes and plan.nodes[-1].target != NO_TARGET:
             # "go to the couch": the rooms that have one (a kind word said narrows them: "coffee table")
             node = plan.nodes[-1]
             items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]

@@ -22,6 +22,8 @@ SOCIAL_REPLIES = {
                  "for you?",
     "out_of_scope": "I can't help with that: I find things in this home, tell you where they are and fetch "
                     "them. Say \"help\" for examples.",
+    "no_arm": "I can't pick things up, carry them or open things: I have no arm. I can find your things, tell "
+              "you where they are and take you to them — for example \"where is my mug?\" or \"go to the couch\".",
     "come_here": "I can't see where you are. Tell me where to go, for example \"go to the living room\".",
 }
 

@@ -34,6 +34,8 @@ class Job:
     #: what the robot is doing now, from the task's events (:func:`activity_phrase`)
     doing: str = ""
     started: float = 0.0  # time.monotonic() when the job started
+    object: str | None = None  # the thing fetched or searched for
+    quiet: bool = False  # replaced by another task: its end is not said (its final turn is still kept)
 
 
 class TaskWorker:
@@ -44,6 +46,12 @@ class TaskWorker:
     def __init__(self, conversation):
         self.conversation = conversation
         self.job: Job | None = None
+
+    @property
+    def searching_for(self) -> str | None:
+        """The thing the running task searches for, or None (no task, or a fetch)."""
+        job = self.job
+        return job.object if self.busy and job is not None and job.kind == "search" else None
 
     @property
     def busy(self) -> bool:
@@ -60,9 +68,11 @@ class TaskWorker:
             return None
         return job.doing, time.monotonic() - job.started
 
-    def stop(self) -> bool:
-        """Ask the running task to stop; True when one was running."""
+    def stop(self, quiet: bool = False) -> bool:
+        """Ask the running task to stop; True when one was running. ``quiet``: another task
+        replaces it, so its "I've stopped." is not said."""
         if self.busy:
+            self.job.quiet = quiet
             self.job.stop.set()
             return True
         return False
@@ -84,7 +94,8 @@ class TaskWorker:
         """Run a fetch (``text``: the command) or a search (``text``: the object) in a thread."""
         previous = self.job
         doing = f"looking for your {text}" if kind == "search" else (f"fetching the {obj}" if obj else "on my way")
-        job = Job(threading.Event(), kind=kind, doing=doing, started=time.monotonic())
+        job = Job(threading.Event(), kind=kind, doing=doing, started=time.monotonic(),
+                  object=text if kind == "search" else obj)
         job.thread = threading.Thread(target=self._run, args=(job, previous, text, room, obj, style),
                                       name=f"assistant-{kind}", daemon=True)
         self.job = job
@@ -153,6 +164,8 @@ class TaskWorker:
             final = self._final(job, text, result, recorder, obj, before, start)
         job.final = final
         c.history.append(final)
+        if job.quiet:
+            return
         self.speak(final.reply)
         if c.on_finish is not None:
             try:

@@ -182,3 +182,17 @@ def test_a_chat_read_from_a_pipe_takes_each_command_after_the_last(tmp_path):
     places = [out.find(s) for s in order]
     assert all(p >= 0 for p in places) and places == sorted(places), out
     assert out.rstrip().endswith("Goodbye."), out
+
+
+def test_telling_where_a_thing_is_while_the_robot_searches_for_it_sends_it_there(tmp_path):
+    """"the remote is on the coffee table in the living room" during the search for the remote:
+    the search stops (without a word) and the robot goes there."""
+    import subprocess
+
+    env = dict(os.environ, ASSISTANT_DATA=str(tmp_path / "data"), PYTHONWARNINGS="ignore")
+    run = subprocess.run([sys.executable, "-m", "assistant", "chat", "--world", "apartment", "--perception",
+                          "oracle"], input="where is my remote\nthe remote is on the coffee table in the living room\n"
+                          "bye\n", capture_output=True, text=True, cwd=str(ROOT), env=env, timeout=240)
+    out = run.stdout
+    assert "I'll go and look for it" in out and "OK, I'll stop searching. Going to the living room." in out, out
+    assert "I've stopped" not in out and "still busy" not in out, out

@@ -58,3 +58,16 @@ def test_teach_phrase():
     assert teach_phrase("let me show you what 'in front of the couch' means") == "in front of the couch"
     assert teach_phrase('I want to teach you what "to the left of the bed" means') == "to the left of the bed"
     assert teach_phrase("let me show you what behind the couch means") == "behind the couch"
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("put the mug next to the sink", "no_arm"), ("can you carry my bag to the bedroom", "no_arm"),
+    ("open the door", "no_arm"), ("please pick up the keys", "no_arm"), ("water the plants", "no_arm"),
+    ("what did you see?", "seen_list"), ("what have you seen so far", "seen_list"),
+    ("what do you remember", "seen_list"),
+    # moves and going somewhere stay commands
+    ("take me to the couch", "command"), ("move forward", "command"), ("bring me the mug", "command"),
+    ("turn around", "command"), ("back up a little", "command"),
+])
+def test_what_a_robot_without_an_arm_cannot_do_and_what_it_saw(text, intent):
+    assert classify(text).name == intent
