@@ -13,6 +13,11 @@ from dataclasses import dataclass
 #: how a person may start by addressing the robot ("hey robot, …", "robot, …")
 ADDRESS = r"((hey|hi|hello|ok|okay)( there)?( robot)? |robot )?"
 
+#: a thing asked for with no place said; ``thing`` is "my glasses", "the remote"
+WANTED = (r"^(?:(?:um|uh|so|ok|okay|well|oh|robot|hey robot|please) )*(?:i need|i want|i would like|id like|"
+          r"(?:can|could|may) i (?:have|get)|i (?:really )?need|go (?:and )?(?:get|fetch)|give me|hand me|"
+          r"pass me) (?P<thing>(?:my|the|our|his|her|a|an|some) [a-z]+(?: [a-z]+)?)(?: please| now| back| for me)*$")
+
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
     ("stop", (r"^(please )?(stop|halt|freeze|wait|hold on|stay)( (it|now|there|right now|please|moving|that))*$",
@@ -39,24 +44,31 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
     ("no_arm", (r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:put|place|drop|set down|"
                 r"carry|throw|pour|wash|clean|tidy|cook|open|close|shut|lock|unlock|fold|water|feed|push|lift|pick up)"
-                r" (?!(?:me|us|to)\b)[a-z]",)),
+                r" (?!(?:me|us|to|up)\b)[a-z]",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
                    r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
                    r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",
                    r"\bwhere (?:have you seen|did you see) (?:things|everything|stuff)\b")),
+    # a thing asked for with no place: "I need my glasses", "can I have my keys" (a fetch)
+    ("want", (WANTED,)),
     ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
+               # typed in a hurry: "wher is my mug", "whre are my keys"
+               r"^(wher|whre|wehre|hwere|whree|were) (is|are|s|did|was) (my|the|our|his|her)\b",
+               r"^where (could|might|would|can) (my|the|our|his|her) [a-z ]+ (be|have gone|have got to)$",
+               r"^(?:(?:im|i am|were|we are) )?(?:still )?(?:looking|searching) for (?:my|our|the|his|her) [a-z]+"
+               r"(?: [a-z]+)?$",
                # where asked inside another sentence: "any idea where my keys are", "tell me where …"
                r"^(.* )?(any idea|no idea|tell me|know|wonder|remember|show me|see) where\b",
                r"^where (on earth |in the world |the heck |the hell )?(are|is|my|the|our|his|her)\b",
                r"^(.* )?(im|i am|were|we are|been) (looking|searching) (everywhere )?for (my|our|the|his|her) "
                r"[a-z]+( [a-z]+)?( everywhere)?$",
                # a bare search request; with a place ("find my phone in the bedroom") it stays a command
-               r"^(please )?((can|could|would|will) you )?(please )?(find|locate|search for|look for) "
+               r"^(please )?((can|could|would|will) you )?(please )?(go (and )?)?(find|locate|search for|look for) "
                r"(my|our|the|his|her) [a-z]+( [a-z]+)?( for me)?( please)?$",
                r"\bhave you seen\b",
                r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b",
@@ -154,12 +166,12 @@ def teach_phrase(text: str) -> str | None:
 #: themselves ("bye" while it asks "which table?")
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
-                          "seen_list", "no_arm"})
+                          "seen_list", "no_arm", "want"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",
            "just", "quickly", "for", "bring", "get", "fetch", "grab", "find", "look", "fetching", "check",
-           "search", "explore", "visit", "inspect", "peek", "see"}
+           "search", "explore", "visit", "inspect", "peek", "see", "show", "lead", "guide", "way"}
 
 #: phrases that name no place ("teach me something")
 VAGUE_PHRASES = {"something", "this", "that", "it", "a place", "how", "where", "a thing", "what i mean"}

@@ -25,7 +25,8 @@ import time
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         unused_mentions)
-from assistant.dialogue.intents import NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, Intent, classify, teach_phrase
+from assistant.dialogue.intents import (NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
+                                        teach_phrase)
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
@@ -36,10 +37,13 @@ from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.objects import is_object_word
 from assistant.grounding.motion import describe_motion, is_motion_plan
-from assistant.grounding.rooms import unknown_room_named
-from assistant.grounding.objects import singular
+from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
+from assistant.grounding.objects import plural, singular
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
 
+#: an answer to "which room?" that leaves it to the robot
+ANYWHERE = (r"\b(anywhere|everywhere|any room|dont know|do not know|no idea|not sure|no clue|search|look around|"
+            r"all over|whole (home|house|flat|apartment|place)|you find it|somewhere)\b")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
 
@@ -167,6 +171,9 @@ class DialogueManager:
             return self._furniture(text, intent, start)
         if name == "seen_list":
             return self._seen_list(text, start)
+        if name == "want":  # "I need my glasses": a fetch of the thing, wherever it is
+            thing = re.search(WANTED, intent.text).group("thing")
+            return self._command(f"bring me {thing}", start, original=text)
         if name in ("where", "where_dynamic"):
             return self._where(text, intent, start)
         if name == "teach":
@@ -202,6 +209,34 @@ class DialogueManager:
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
         """(known object named in the text, or None; the unknown noun asked about, or None)."""
         return named_object(norm, self.world, plan_object)
+
+    def _place_asked(self, text: str, intent, noun: str, start: float) -> Turn | None:
+        """A where-question about a room or a piece of furniture: where it is, and an offer to go."""
+        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+        if room is not None:
+            self.pending = {"kind": "confirm", "command": f"go to the {room}", "object": None}
+            return self._turn(text, intent.name, f"The {room} is one of the rooms here ({_join(['the ' + r for r in self.rooms])}). "
+                              "Shall I go there?", "answer", "answered", start, room=room)
+        missing = unknown_room_named(intent.text.split(), self.world) or (
+            noun if noun in COMMON_ROOMS or f"{noun} room" in COMMON_ROOMS else None)
+        if missing is not None:
+            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
+                              unknown_room=missing)
+        furniture = self.world.scene(self.scene).furniture
+        found = matching(furniture, noun)
+        if not found:
+            return None
+        homes = [r for r in self.rooms if any(f.room == r for f in found)]
+        name = singular(noun)
+        if len(found) == 1:
+            self.pending = {"kind": "confirm", "command": f"go to the {name} in the {homes[0]}", "object": None}
+            return self._turn(text, intent.name, f"The {name} is in the {homes[0]}. Shall I go to it?", "answer",
+                              "answered", start, room=homes[0])
+        return self._turn(text, intent.name, f"There are {NUMBER_WORDS.get(len(found), len(found))} "
+                          f"{plural(found[0].word)} here, in {_join(['the ' + r for r in homes])}. Say which one to "
+                          f"go to, for example \"go to the {found[0].model} in the {found[0].room}\".",
+                          "answer", "answered", start)
 
     def _seen_list(self, text: str, start: float) -> Turn:
         """"what did you see?": the things the robot remembers in this home, latest first."""
@@ -243,6 +278,10 @@ class DialogueManager:
 
     def _where(self, text: str, intent, start: float) -> Turn:
         obj, unknown = self._object_in(intent.text)
+        if obj is None and unknown:  # "where is the bedroom?", "where's the couch?": a place, not a thing
+            place = self._place_asked(text, intent, unknown, start)
+            if place is not None:
+                return place
         if obj is None:
             names = _join(sorted(known_object_names(self.world)), "or")
             if unknown:
@@ -419,8 +458,8 @@ class DialogueManager:
             elif homes and not force:
                 self.pending = {"kind": "room", "text": text, "original": said}
                 word = " ".join([*node.descriptors, node.support or node.target]) if kinds else node.target
-                return self._turn(said, "command", f"Which {word} — the one in the "
-                                  + _join([f"the {r}" for r in homes], "or")[4:] + "?", "clarify", "asked",
+                return self._turn(said, "command", f"Which room is the {word} in — "
+                                  + _join([f"the {r}" for r in homes], "or") + "?", "clarify", "asked",
                                   start, missing="room", plan=plan.to_dict())
         if room is None:
             seen = self.memory.recall(self.world.name, obj) if obj else None
@@ -431,10 +470,11 @@ class DialogueManager:
                 room = seen.room
                 text = f"{text} in the {room}"
             elif not force:
-                self.pending = {"kind": "room", "text": text, "original": said}
+                self.pending = {"kind": "room", "text": text, "original": said, "object": obj}
                 rooms = _join(["the " + r for r in self.rooms], "or")
                 what = f"your {obj}" if obj else "it"
-                return self._turn(said, "command", f"Which room should I look for {what} in — {rooms}?",
+                offer = " Or shall I search everywhere?" if obj and not plan.nodes else ""
+                return self._turn(said, "command", f"Which room should I look for {what} in — {rooms}?{offer}",
                                   "clarify", "asked", start, missing="room", plan=plan.to_dict())
         if not force:
             dropped = unused_mentions(mentions, plan)
@@ -522,6 +562,10 @@ class DialogueManager:
             return None
         if p["kind"] == "room":
             room = next((r for r in self.rooms if r in norm), None)
+            if room is None and p.get("object") and (intent.name == "yes" or re.search(ANYWHERE, norm)):
+                self.pending = None  # "I don't know", "anywhere", "search everywhere": the robot searches
+                return self._search(text, "command", p["object"], "static", start,
+                                    lead=f"OK, I'll look for your {p['object']} everywhere.")
             if room is None:
                 plan = self.services.parser(self.world).parse(text).plan
                 room = plan.room

@@ -71,3 +71,14 @@ def test_teach_phrase():
 ])
 def test_what_a_robot_without_an_arm_cannot_do_and_what_it_saw(text, intent):
     assert classify(text).name == intent
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("wher is my mug", "where"), ("whre are my keys", "where"), ("where could my keys be", "where"),
+    ("looking for my wallet", "where"), ("go find my keys", "where"),
+    ("I need my glasses", "want"), ("can I have my keys please", "want"), ("give me the remote", "want"),
+    ("i want the remote from the bedroom", "command"),  # a place said: the parser's
+    ("we were looking at the couch", "command"),
+])
+def test_hurried_and_indirect_ways_of_asking(text, intent):
+    assert classify(text).name == intent

@@ -287,3 +287,21 @@ def test_a_pending_question_gives_way_to_a_goodbye_or_a_new_place(services, tmp_
     m.wait(10)
     assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
     assert m.handle("thanks, bye").action == "leave"
+
+
+def test_a_thing_wanted_with_no_place_is_looked_for_when_the_person_does_not_know_where(services, tmp_path):
+    m = make(services.using(fetcher=StandInFetcher(), searcher=None), tmp_path, StandInFetcher())
+    ask = m.handle("I need my glasses case")
+    assert ask.action == "clarify" and "Which room" in ask.reply and "search everywhere" in ask.reply
+    assert m.pending["kind"] == "room" and m.pending["object"] == "glasses case"
+
+
+@pytest.mark.parametrize("said, reply", [
+    ("where's the bed", "The bed is in the bedroom. Shall I go to it?"),
+    ("where is the kitchen", "There is no kitchen here; the rooms are the hallway, the living room and the bedroom."),
+    ("how do I get to the bedroom", "The bedroom is one of the rooms here (the hallway, the living room and the "
+                                    "bedroom). Shall I go there?"),
+])
+def test_where_a_room_or_a_piece_of_furniture_is(services, tmp_path, said, reply):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle(said).reply == reply

@@ -79,6 +79,24 @@ CONTROL_PHRASES = (
     "the other one", "the big one", "the small one", "the one by the bed", "the one next to the couch",
 )
 
+#: what people say to move the robot itself, ask about the home and ask for things with no place
+#: (grounding.motion, dialogue.inventory, the "want" and "no_arm" intents), over an object
+#: ({o}), a room ({r}) and a furniture word ({f}); weighted :data:`ROBOT_WEIGHT`
+ROBOT_TEMPLATES = (
+    "turn left", "turn right", "turn around", "turn back", "spin around", "go forward", "move forward",
+    "go straight ahead", "keep going", "back up", "back up a little", "reverse a bit", "move back one meter",
+    "go forward two meters", "move forward one meter and then turn right", "turn left ninety degrees",
+    "turn right forty five degrees", "turn slightly to the left", "take two steps forward", "take a step back",
+    "move left a bit", "take a left", "make a right", "face the other way",
+    "what's in the {r}", "what furniture is in the {r}", "is there a {f} in the {r}", "are there any {fs} here",
+    "how many {fs} are in the {r}", "how many {fs} are there", "go to the {f}", "take me to the {f}",
+    "where is the {f}", "where is the {r}", "i need my {o}", "can i have my {o}", "give me my {o}",
+    "what did you see", "what do you remember", "i don't know", "anywhere", "search everywhere",
+    "put the {o} on the {f}", "pick up the {o}", "open the door", "can you carry the {o}",
+)
+#: how many times each of :data:`ROBOT_TEMPLATES`' sentences is in the model text
+ROBOT_WEIGHT = 8
+
 #: command templates over an object ({o}), a room ({r}) and a furniture word ({f})
 OBJECT_TEMPLATES = (
     "where is my {o}", "where is the {o}", "where's my {o}", "have you seen my {o}",
@@ -250,6 +268,21 @@ def clause_sentences(words: dict[str, list[str]], count: int = 12000) -> list[st
     return [normalise_transcript(s) for s in out]
 
 
+def robot_sentences(words: dict[str, list[str]]) -> list[str]:
+    """:data:`ROBOT_TEMPLATES`, each over the home's rooms, furniture and objects in a fixed
+    rotation (a template without a slot once)."""
+    from assistant.grounding.objects import plural
+
+    rooms, furniture, objects = words["rooms"], words["furniture"], words["objects"]
+    out = []
+    for t in ROBOT_TEMPLATES:
+        count = max(len(rooms), len(furniture), len(objects)) if "{" in t else 1
+        for i in range(count):
+            f = furniture[i % len(furniture)]
+            out.append(t.format(r=rooms[i % len(rooms)], f=f, fs=plural(f), o=objects[i % len(objects)]))
+    return [normalise_transcript(s) for s in dict.fromkeys(out)]
+
+
 def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
     """The sentences and phrases the recogniser's model is built from (see the module doc)."""
     words = home_words(world)
@@ -257,6 +290,7 @@ def build_vocabulary(world=None, corpus_paths=None) -> SpeechVocabulary:
                  + clause_sentences(words))
     # short phrases said on their own: weighted so a sentence start does not drown them
     sentences += [normalise_transcript(p) for p in CONTROL_PHRASES] * CONTROL_WEIGHT
+    sentences += robot_sentences(words) * ROBOT_WEIGHT
     phrases = [normalise_transcript(p) for p in CONTROL_PHRASES]
     phrases += [normalise_transcript(t.format(o=o)) for o in words["objects"] for t in OBJECT_TEMPLATES[:4]]
     phrases += words["rooms"] + words["furniture"]
