@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 
 from assistant.cli.common import (add_json_flag, emit_json, finite_float, parse_pose, print_table,
                                   run_batch, whole_number)
@@ -78,11 +79,13 @@ def run(args: argparse.Namespace) -> int:
         return run_batch(args.batch, lambda req: _handle(detector, _request(req)), json_requests=True)
     if bool(args.world) == bool(args.depth):
         raise AssistantError("give either --world NAME --pose X,Y,HEADING or --depth FILE.png "
-                             "--intrinsics FX,FY,CX,CY --depth-scale S")
+                             "[--intrinsics FX,FY,CX,CY --depth-scale S]")
     request = {"world": args.world, "scene": args.scene, "pose": args.pose, "depth": args.depth,
                "intrinsics": args.intrinsics, "depth_scale": args.depth_scale,
                "camera_height": args.camera_height, "tilt": args.tilt}
     result = _handle(detector, request)
+    for note in result.get("assumed", []):  # defaults stood in for --intrinsics / --depth-scale
+        print(f"note: {note}", file=sys.stderr)
     if args.json:
         emit_json(result)
         return 0
@@ -176,16 +179,20 @@ def _handle(detector, req: dict) -> dict:
         result = detector().analyse(frame)
         out = {"world": world.name, "scene": renderer.scene, "pose": list(req["pose"])}
     elif req.get("depth"):
-        if req.get("intrinsics") is None or req.get("depth_scale") is None:
-            raise AssistantError("--depth needs --intrinsics FX,FY,CX,CY and --depth-scale S")
         from assistant.perception.depthfile import load_depth_png
 
-        frame, has_mount = load_depth_png(req["depth"], tuple(req["intrinsics"]), float(req["depth_scale"]),
-                                          camera_height_m=req.get("camera_height"), tilt_deg=req.get("tilt"))
+        notes: list[str] = []
+        intrinsics = None if req.get("intrinsics") is None else tuple(req["intrinsics"])
+        scale = None if req.get("depth_scale") is None else float(req["depth_scale"])
+        frame, has_mount = load_depth_png(req["depth"], intrinsics, scale, camera_height_m=req.get("camera_height"),
+                                          tilt_deg=req.get("tilt"), notes=notes)
         result = detector().analyse(frame, use_mount=has_mount)
         out = {"depth": str(req["depth"])}
+        if notes:
+            out["assumed"] = notes
     else:
-        raise AssistantError("a request needs either world and pose, or depth, intrinsics and depth_scale")
+        raise AssistantError("a request needs either world and pose, or depth (with intrinsics and depth_scale "
+                             "if they are not a Kinect's and millimetres)")
     out.update(result.to_dict())
     out["ms"] = round(result.timings_ms.get("total", 0.0), 1)
     return out

@@ -45,14 +45,45 @@ def _read_depth_pixels(image, file: Path) -> np.ndarray:
         return np.asarray(im)
 
 
-def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, float],
-                   depth_scale: float, *, camera_height_m: float | None = None,
-                   tilt_deg: float | None = None, invalid_values: tuple[int, ...] = (65535,)
-                   ) -> tuple[DepthFrame, bool]:
+#: nominal pinhole intrinsics (fx, fy, cx, cy; pixels) of the common depth cameras, by frame size
+NOMINAL_INTRINSICS = {(640, 480): (525.0, 525.0, 319.5, 239.5),   # Kinect v1, Xtion (NYU, TUM)
+                      (512, 424): (365.0, 365.0, 255.5, 211.5),   # Kinect v2
+                      (730, 530): (529.5, 529.5, 364.0, 264.0)}   # Kinect v2 as SUN RGB-D crops it
+#: the median depth (metres) a room seen by a depth camera has; outside it the scale is wrong
+PLAUSIBLE_MEDIAN_M = (0.3, 10.0)
+
+
+def nominal_intrinsics(width: int, height: int) -> tuple[float, float, float, float]:
+    """A Kinect's nominal intrinsics for a ``width`` × ``height`` frame: the table's, or a
+    Kinect v1's 63° field of view scaled to the width, centred."""
+    if (width, height) in NOMINAL_INTRINSICS:
+        return NOMINAL_INTRINSICS[(width, height)]
+    f = 525.0 * width / 640.0
+    return f, f, (width - 1) / 2.0, (height - 1) / 2.0
+
+
+def guess_depth_scale(median_units: float, width: int, height: int) -> tuple[float, str]:
+    """(metres per unit, what it assumes) for a frame whose valid readings have the median
+    ``median_units``: millimetres when that makes a room-sized median (the usual 16-bit
+    encoding), else a Kinect v2's 0.1 mm for a 512×424 frame or TUM's 1/5000 m."""
+    if median_units * 1e-3 <= 6.0:
+        return 1e-3, "millimetres"
+    if (width, height) == (512, 424):
+        return 1e-4, "0.1 mm (a Kinect v2's encoding)"
+    return 2e-4, "1/5000 m (the TUM RGB-D encoding)"
+
+
+def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, float] | None,
+                   depth_scale: float | None, *, camera_height_m: float | None = None,
+                   tilt_deg: float | None = None, invalid_values: tuple[int, ...] = (65535,),
+                   notes: list[str] | None = None) -> tuple[DepthFrame, bool]:
     """Load a 16-bit depth PNG.
 
     ``intrinsics`` is ``(fx, fy, cx, cy)`` in 0-based pixels; ``depth_scale`` the metres per
-    unit (1e-3 for millimetres, 1e-4 for Kinect v2 0.1 mm, 2e-4 for TUM's 1/5000).
+    unit (1e-3 for millimetres, 1e-4 for Kinect v2 0.1 mm, 2e-4 for TUM's 1/5000). Either may
+    be None: then :func:`nominal_intrinsics` and :func:`guess_depth_scale` stand in, and what was
+    assumed is appended to ``notes``. A scale that puts the median reading outside
+    :data:`PLAUSIBLE_MEDIAN_M` is refused with the scale that would fit.
     Returns the frame and whether a mount (height *and* tilt) was given; without one the floor
     is searched for rather than predicted.
     """
@@ -76,9 +107,28 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     if raw.ndim != 2:
         raise AssistantError(f"{file}: expected a single-channel (16-bit) depth image, "
                              f"got shape {raw.shape}")
+    h, w = raw.shape
+    readings = raw[(raw > 0) & ~np.isin(raw, invalid_values)]
+    median_units = float(np.median(readings)) if readings.size else 0.0
+    if depth_scale is None:
+        depth_scale, unit = guess_depth_scale(median_units, w, h)
+        if notes is not None:
+            notes.append(f"no --depth-scale given: the readings taken as {unit} (--depth-scale {depth_scale:g}); "
+                         "give --depth-scale for your camera")
     if not (0 < depth_scale <= 1):  # (1e300 overflowed into warnings and an empty frame)
         raise AssistantError(f"--depth-scale must be a positive number of metres per unit, at most 1 "
                              f"(0.001 for millimetres), got {depth_scale}")
+    median_m = median_units * depth_scale
+    if readings.size and not PLAUSIBLE_MEDIAN_M[0] <= median_m <= PLAUSIBLE_MEDIAN_M[1]:
+        fit, unit = guess_depth_scale(median_units, w, h)
+        raise AssistantError(f"{file}: with --depth-scale {depth_scale:g} the readings' median would be "
+                             f"{median_m:,.2f} m, not a room; the median reading is {median_units:,.0f} units — "
+                             f"try --depth-scale {fit:g} ({unit})")
+    if intrinsics is None:
+        intrinsics = nominal_intrinsics(w, h)
+        if notes is not None:
+            notes.append(f"no --intrinsics given: assuming a Kinect's for {w}×{h} "
+                         f"(--intrinsics {','.join(f'{v:g}' for v in intrinsics)}); give yours for exact positions")
     fx, fy, cx, cy = intrinsics
     if not (fx > 0 and fy > 0):
         raise AssistantError(f"--intrinsics: focal lengths must be positive, got fx={fx}, fy={fy}")
@@ -86,7 +136,6 @@ def load_depth_png(path: str | Path, intrinsics: tuple[float, float, float, floa
     for value in invalid_values:
         depth[raw == value] = 0.0
     depth *= np.float32(depth_scale)
-    h, w = depth.shape
     k = CameraIntrinsics(w, h, float(fx), float(fy), float(cx), float(cy))
     has_mount = camera_height_m is not None and tilt_deg is not None
     mount = CameraMount(height_m=camera_height_m if camera_height_m is not None else 1.05,
