@@ -79,7 +79,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
              r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),
     ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
-             r"yes please|go and check|check|sure thing)$",)),
+             r"yes please|go and check|check|sure thing)$",
+             # said together: "sure, go ahead", "yes please do", "ok go and get it"
+             r"^(yes|yeah|yep|yup|sure|ok|okay|alright|please|of course)( (yes|please|sure|go ahead|do it|please do|"
+             r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not))+$")),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",)),
     ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",)),
     ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",

@@ -590,7 +590,8 @@ class DialogueManager:
                 turn = self._command(command, start, force=True, original=text)
                 turn.data["chosen"] = option["id"]
                 return turn
-            if intent.name == "command" and (len(norm.split()) > 5 or self._is_request(text)):
+            pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
+            if intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text)):
                 self.pending = None
                 return None
             return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]

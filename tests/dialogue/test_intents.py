@@ -82,3 +82,11 @@ def test_what_a_robot_without_an_arm_cannot_do_and_what_it_saw(text, intent):
 ])
 def test_hurried_and_indirect_ways_of_asking(text, intent):
     assert classify(text).name == intent
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("sure, go ahead", "yes"), ("yes please do", "yes"), ("ok go and get it", "yes"), ("yeah go for it", "yes"),
+    ("okay thanks", "thanks"), ("yes the bedroom", "command"),
+])
+def test_yes_said_in_more_than_one_word(text, intent):
+    assert classify(text).name == intent

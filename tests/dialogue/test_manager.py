@@ -305,3 +305,10 @@ def test_a_thing_wanted_with_no_place_is_looked_for_when_the_person_does_not_kno
 def test_where_a_room_or_a_piece_of_furniture_is(services, tmp_path, said, reply):
     m = make(services, tmp_path, StandInFetcher())
     assert m.handle(said).reply == reply
+
+
+def test_pointing_at_an_option_is_an_answer_not_a_new_request(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
+    again = m.handle("the one next to the bed")  # two of them are: the question is asked again
+    assert again.action == "clarify" and "Which room" not in again.reply and m.pending["kind"] == "which"
