@@ -24,6 +24,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"^(stop|halt) (it|now|please)\b")),
     ("cancel", (r"^(please )?(cancel|never ?mind|forget (it|that|about it)|abort|no never ?mind)\b",
                 r"^(no )?(it doesnt|it does not) matter\b")),
+    # a request not to do something: never carried out as the request itself
+    ("dont", (r"^(please |no |no no )?(dont|do not|never|better not)( you)? (go|bring|fetch|get|come|drive|move|turn|"
+              r"look|search|touch|enter|leave)\b",)),
     ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
                 r"^(pardon|sorry what|what|huh|repeat)$")),
     ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bhow do(es)? (this|you) work\b",
@@ -169,7 +172,7 @@ def teach_phrase(text: str) -> str | None:
 #: themselves ("bye" while it asks "which table?")
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
-                          "seen_list", "no_arm", "want"})
+                          "seen_list", "no_arm", "want", "dont"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

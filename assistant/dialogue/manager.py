@@ -41,6 +41,9 @@ from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
 from assistant.grounding.objects import plural, singular
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
 
+#: a where-question about one place, before its name ("where's the", "how do I get to the")
+PLACE_QUESTION = (r"(?:(?:and|so|ok|okay|um|robot) )*(?:where(?: is| are| s)?|wheres|how (?:do|can) i (?:get|go) to|"
+                  r"which way (?:is|to)|where can i find|do you know where) (?:the |my |a |our |your )?")
 #: an answer to "which room?" that leaves it to the robot
 ANYWHERE = (r"\b(anywhere|everywhere|any room|dont know|do not know|no idea|not sure|no clue|search|look around|"
             r"all over|whole (home|house|flat|apartment|place)|you find it|somewhere)\b")
@@ -178,6 +181,15 @@ class DialogueManager:
             return self._where(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
+        if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
+            if self.stop():
+                return self._turn(text, name, "OK, I won't — stopping.", "stop", "stopped", start)
+            return self._turn(text, name, "OK, I won't.", start=start)
+        bare = re.sub(r"^(the|my|a|an|your|our) ", "", intent.text)
+        if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare or bare in known_object_names(self.world)
+                                                or matching(self.world.scene(self.scene).furniture, bare)):
+            # a thing's name on its own ("mug?", "couch"): asked where it is
+            return self._where(text, Intent("where", f"where is the {bare}"), start)
         return self._command(text, start)
 
     # ------------------------------------------------------------------ stop / wait
@@ -277,13 +289,28 @@ class DialogueManager:
         return self._turn(text, "furniture", reply, "answer", "answered", start, room=room, asked=what or None)
 
     def _where(self, text: str, intent, start: float) -> Turn:
+        parts = [p.strip() for p in re.split(r"\b(?:and|or|and also)\b", intent.text) if p.strip()]
+        named = [o for o in (self._object_in(p)[0] or self._object_in(p)[1] for p in parts) if o]
+        if len(parts) > 1 and len(dict.fromkeys(named)) > 1 and self._object_in(parts[0])[0] is not None:
+            # "where are my keys and my wallet": one at a time, the first now
+            turn = self._where(text, Intent(intent.name, parts[0]), start)
+            later = _join([f"your {o}" for o in list(dict.fromkeys(named))[1:]])
+            turn.reply += f" (You also asked about {later}: ask me again after this.)"
+            self.last_said = turn.reply
+            return turn
         obj, unknown = self._object_in(intent.text)
-        if obj is None and unknown:  # "where is the bedroom?", "where's the couch?": a place, not a thing
+        if obj is None and unknown and re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text):
+            # "where is the bedroom?", "where's the couch?": a place, not a thing
             place = self._place_asked(text, intent, unknown, start)
             if place is not None:
                 return place
         if obj is None:
             names = _join(sorted(known_object_names(self.world)), "or")
+            if unknown and (matching(self.world.scene(self.scene).furniture, unknown)
+                            or canonical_word(singular(unknown)) in FURNITURE_WORDS):
+                return self._turn(text, intent.name, "I look for things, not furniture — ask me \"what's in the "
+                                  f"{self.rooms[-1]}?\" or \"where's the {singular(unknown)}?\", or tell me to go to "
+                                  "a piece of furniture.", "answer", "answered", start)
             if unknown:
                 return self._turn(text, intent.name, f"I don't know what {article(unknown)} {unknown} is, so I "
                                   f"can't look for it. I can look for: {names}.", "answer", "not_understood",

@@ -90,3 +90,9 @@ def test_hurried_and_indirect_ways_of_asking(text, intent):
 ])
 def test_yes_said_in_more_than_one_word(text, intent):
     assert classify(text).name == intent
+
+
+@pytest.mark.parametrize("text", ["don't go to the bedroom", "please do not touch that", "no don't go there",
+                                  "never go into the bedroom"])
+def test_requests_not_to_do_something(text):
+    assert classify(text).name == "dont"

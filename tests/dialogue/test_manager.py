@@ -312,3 +312,25 @@ def test_pointing_at_an_option_is_an_answer_not_a_new_request(services, tmp_path
     assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
     again = m.handle("the one next to the bed")  # two of them are: the question is asked again
     assert again.action == "clarify" and "Which room" not in again.reply and m.pending["kind"] == "which"
+
+
+@pytest.mark.parametrize("said, start", [
+    ("don't go to the bedroom", "OK, I won't."),
+    ("couch", "The couch is in the living room."),
+    ("where are my keys and my wallet", "I haven't seen your keys"),
+    ("where is the table between the chairs and the couch", "I look for things, not furniture"),
+])
+def test_negations_bare_names_two_things_and_furniture_in_where_questions(services, tmp_path, said, start):
+    m = make(services, tmp_path, StandInFetcher())
+    turn = m.handle(said)
+    assert turn.reply.startswith(start), turn.reply
+    assert turn.action != "fetch"
+    if "wallet" in said:
+        assert "You also asked about your wallet" in turn.reply
+
+
+def test_dont_while_moving_stops_the_robot(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(hold=True))
+    assert m.handle("go into the bedroom").outcome == "started"
+    assert m.handle("no don't go there").outcome == "stopped"
+    m.wait(5)
