@@ -35,10 +35,9 @@ from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Tu
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
-from assistant.grounding.objects import is_object_word
 from assistant.grounding.motion import describe_motion, is_motion_plan
+from assistant.grounding.objects import is_object_word, plural, singular
 from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
-from assistant.grounding.objects import plural, singular
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
 
 #: a where-question about one place, before its name ("where's the", "how do I get to the")
@@ -186,7 +185,7 @@ class DialogueManager:
                 return self._turn(text, name, "OK, I won't — stopping.", "stop", "stopped", start)
             return self._turn(text, name, "OK, I won't.", start=start)
         bare = re.sub(r"^(the|my|a|an|your|our) ", "", intent.text)
-        if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare or bare in known_object_names(self.world)
+        if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare
                                                 or matching(self.world.scene(self.scene).furniture, bare)):
             # a thing's name on its own ("mug?", "couch"): asked where it is
             return self._where(text, Intent("where", f"where is the {bare}"), start)
@@ -227,8 +226,9 @@ class DialogueManager:
         room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
         if room is not None:
             self.pending = {"kind": "confirm", "command": f"go to the {room}", "object": None}
-            return self._turn(text, intent.name, f"The {room} is one of the rooms here ({_join(['the ' + r for r in self.rooms])}). "
-                              "Shall I go there?", "answer", "answered", start, room=room)
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(text, intent.name, f"The {room} is one of the rooms here ({rooms}). Shall I go there?",
+                              "answer", "answered", start, room=room)
         missing = unknown_room_named(intent.text.split(), self.world) or (
             noun if noun in COMMON_ROOMS or f"{noun} room" in COMMON_ROOMS else None)
         if missing is not None:
@@ -289,7 +289,7 @@ class DialogueManager:
         return self._turn(text, "furniture", reply, "answer", "answered", start, room=room, asked=what or None)
 
     def _where(self, text: str, intent, start: float) -> Turn:
-        parts = [p.strip() for p in re.split(r"\b(?:and|or|and also)\b", intent.text) if p.strip()]
+        parts = [p.strip() for p in re.split(r"\b(?:and|or)\b", intent.text) if p.strip()]
         named = [o for o in (self._object_in(p)[0] or self._object_in(p)[1] for p in parts) if o]
         if len(parts) > 1 and len(dict.fromkeys(named)) > 1 and self._object_in(parts[0])[0] is not None:
             # "where are my keys and my wallet": one at a time, the first now
