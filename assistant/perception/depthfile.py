@@ -45,8 +45,9 @@ def _read_depth_pixels(image, file: Path) -> np.ndarray:
         return np.asarray(im)
 
 
+_V1 = CameraIntrinsics.kinect_v1()
 #: nominal pinhole intrinsics (fx, fy, cx, cy; pixels) of the common depth cameras, by frame size
-NOMINAL_INTRINSICS = {(640, 480): (525.0, 525.0, 319.5, 239.5),   # Kinect v1, Xtion (NYU, TUM)
+NOMINAL_INTRINSICS = {(_V1.width, _V1.height): (_V1.fx, _V1.fy, _V1.cx, _V1.cy),   # Kinect v1, Xtion (NYU, TUM)
                       (512, 424): (365.0, 365.0, 255.5, 211.5),   # Kinect v2
                       (730, 530): (529.5, 529.5, 364.0, 264.0)}   # Kinect v2 as SUN RGB-D crops it
 #: the median depth (metres) a room seen by a depth camera has; outside it the scale is wrong
@@ -58,7 +59,7 @@ def nominal_intrinsics(width: int, height: int) -> tuple[float, float, float, fl
     Kinect v1's 63° field of view scaled to the width, centred."""
     if (width, height) in NOMINAL_INTRINSICS:
         return NOMINAL_INTRINSICS[(width, height)]
-    f = 525.0 * width / 640.0
+    f = _V1.fx * width / _V1.width
     return f, f, (width - 1) / 2.0, (height - 1) / 2.0
 
 
