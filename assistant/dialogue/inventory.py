@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from assistant.dialogue.clarify import article
 from assistant.dialogue.turns import NUMBER_WORDS, join_words
 from assistant.grounding.objects import plural, singular
-from assistant.grounding.vocabulary import FURNITURE_WORDS, canonical_word
+from assistant.grounding.vocabulary import canonical_word, furniture_category
 
 __all__ = ["ANYTHING", "furniture_answer", "furniture_asked", "matching"]
 
@@ -42,10 +42,6 @@ def furniture_asked(norm: str) -> tuple[str, str] | None:
     return None
 
 
-def _category(word: str) -> str:
-    return FURNITURE_WORDS.get(canonical_word(word), canonical_word(word))
-
-
 def matching(items: Sequence, what: str) -> list:
     """The pieces ``what`` names: by model name ("coffee table", "desk") if any piece has it,
     else by category ("tables", "sofa", "nightstand" → table)."""
@@ -53,7 +49,7 @@ def matching(items: Sequence, what: str) -> list:
     by_model = [f for f in items if f.model == one]
     if by_model:
         return by_model
-    return [f for f in items if f.word == _category(one)]
+    return [f for f in items if f.word == (furniture_category(one) or canonical_word(one))]
 
 
 def _count(n: int, name: str) -> str:

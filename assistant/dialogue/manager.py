@@ -38,7 +38,7 @@ from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.objects import is_object_word, plural, singular
 from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
-from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, canonical_word
+from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, furniture_category
 
 #: a where-question about one place, before its name ("where's the", "how do I get to the")
 PLACE_QUESTION = (r"(?:(?:and|so|ok|okay|um|robot) )*(?:where(?: is| are| s)?|wheres|how (?:do|can) i (?:get|go) to|"
@@ -275,7 +275,7 @@ class DialogueManager:
         kind, what = furniture_asked(intent.text)
         furniture = self.world.scene(self.scene).furniture
         if what and what not in ANYTHING and not matching(furniture, what) \
-                and canonical_word(singular(what)) not in FURNITURE_WORDS:
+                and furniture_category(singular(what)) is None:
             if self._object_in(intent.text)[0] is not None:  # "is there a mug in the bedroom?"
                 return self._where(text, Intent("where", intent.text), start)
             return self._command(text, start)
@@ -307,7 +307,7 @@ class DialogueManager:
         if obj is None:
             names = _join(sorted(known_object_names(self.world)), "or")
             if unknown and (matching(self.world.scene(self.scene).furniture, unknown)
-                            or canonical_word(singular(unknown)) in FURNITURE_WORDS):
+                            or furniture_category(singular(unknown)) is not None):
                 return self._turn(text, intent.name, "I look for things, not furniture — ask me \"what's in the "
                                   f"{self.rooms[-1]}?\" or \"where's the {singular(unknown)}?\", or tell me to go to "
                                   "a piece of furniture.", "answer", "answered", start)
