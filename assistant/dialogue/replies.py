@@ -67,7 +67,8 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
     if result.failure and result.failure != "not_visible":
         reply = f"Sorry, I couldn't do it: {message or result.failure}."
         return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start), pending
-    if (getattr(result.task, "details", None) or {}).get("motion"):  # "turn around": said what it did
+    details = getattr(result.task, "details", None) or {}
+    if details.get("motion"):  # "turn around": said what it did
         return Turn(text, "command", f"Done — I've {message}.", "fetch", "success", data,
                     time.perf_counter() - start), pending
     if item is not None:
@@ -112,8 +113,8 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
         return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start), pending
     if item is not None:
         where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
-    elif message.startswith("in the "):  # a room with nothing to face ("go to the hallway")
-        return Turn(text, "command", f"I'm here, {message}.", "fetch", "success", data,
+    elif details.get("arrived"):  # a room with nothing to face ("go to the hallway")
+        return Turn(text, "command", f"I'm here, in the {details['arrived']}.", "fetch", "success", data,
                     time.perf_counter() - start), pending
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                 time.perf_counter() - start), pending

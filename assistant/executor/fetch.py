@@ -256,7 +256,8 @@ class FetchTask:
                     self.surveyor.better_view(room)
                     candidates = self.chooser.likely_surfaces(room, wanted, self.ctx.pose(), self._said)
                 if not candidates and not plan.nodes and not getattr(plan, "object", None):
-                    return FetchResult(ExecutionStatus.SUCCESS, f"in the {room}", **out)  # "go to the hallway"
+                    # "go to the hallway": there, with nothing to face
+                    return FetchResult(ExecutionStatus.SUCCESS, f"in the {room}", details={"arrived": room}, **out)
                 if not candidates:
                     status, message = node_failure or (
                         ExecutionStatus.REFERENCE_NOT_FOUND, f"no {wanted} was seen in the {room}")
