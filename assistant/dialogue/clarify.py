@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from assistant.app import known_object_names
 from assistant.dialogue.intents import ordinal_choice
-from assistant.grounding.objects import object_phrase
+from assistant.grounding.objects import article, object_phrase
 
 #: furniture words the robot can be told an unknown word stands for
 FURNITURE_CHOICES = ("table", "chair", "couch", "bed")
@@ -102,10 +102,6 @@ def activity_phrase(name: str, data: dict) -> str | None:
     if name == "move_to":
         return "moving into place"
     return None
-
-
-def article(word: str) -> str:
-    return "an" if word[:1] in "aeiou" else "a"
 
 
 _STOP = {"the", "one", "with", "that", "this", "near", "next", "and", "its", "it", "is", "on", "of", "to",

@@ -57,6 +57,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     # a thing asked for with no place: "I need my glasses", "can I have my keys" (a fetch)
     ("want", (WANTED,)),
     ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
+    # where a thing should go ("where should I put my keys?"): the person's choice, not a search
+    ("put_advice", (r"\bwhere (?:should|shall|do|can|could|would|must|ought) (?:i|we) (?:to )?(?:put|leave|keep|store|"
+                    r"place|hang|stick|stash) (?:my|the|our|his|her|this|that|these|those|it|them)\b",
+                    r"\bwhere (?:does|do) (?:my|the|our|his|her|this|that|these|those) [a-z]+(?: [a-z]+)? (?:go|belong|live)"
+                    r"(?: now)?$")),
+    ("where_check", None),  # WHERE_CHECKS, below: "is my mug in the bedroom?"
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
@@ -106,7 +112,30 @@ FURNITURE_QUESTIONS = (
     _LEAD + r"how many (?P<what>[a-z ]+?) (?:are there|are|is there|do we have|do i have|do you know of|"
     r"can you see|do you see|have we got|have i got)" + _IN_ROOM + r"$",
 )
-RULES = [(name, FURNITURE_QUESTIONS if patterns is None else patterns) for name, patterns in RULES]
+#: a yes-or-no question whether a thing is at a place: "is my mug in the bedroom?", "did I leave my
+#: keys on the table?", "could my glasses be in the living room?", "is it still on the couch?"
+_THING = r"(?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!still\b|maybe\b|perhaps\b|by\b|now\b)[a-z]+)?|it|they|them)"
+_PLACE = (r"(?P<place>(?:in|on|under|by|at|near|next to|beside|behind|inside|in front of) [a-z]+(?: [a-z]+)*?"
+          r"|upstairs|downstairs)(?: still| now| then| by any chance| perhaps| maybe)?$")
+WHERE_CHECKS = (
+    _LEAD + r"(?:is|are) " + _THING + r" (?:still |maybe |perhaps |by any chance )?" + _PLACE,
+    _LEAD + r"(?:did|have|do) (?:i|we|you|he|she) (?:leave|left|put|seen|see|keep|last see) " + _THING + r" " + _PLACE,
+    _LEAD + r"(?:could|might|would|can) " + _THING + r" be " + _PLACE,
+)
+_WHERE_CHECKS = tuple(re.compile(p) for p in WHERE_CHECKS)
+
+
+def where_check_parts(norm: str) -> tuple[str, str] | None:
+    """(thing, place) of a normalised yes-or-no place question ("my mug", "in the bedroom"), or None."""
+    for pattern in _WHERE_CHECKS:
+        m = pattern.search(norm)
+        if m:
+            return m.group("thing"), m.group("place")
+    return None
+
+
+RULES = [(name, (FURNITURE_QUESTIONS if name == "furniture" else WHERE_CHECKS) if patterns is None else patterns)
+         for name, patterns in RULES]
 
 _COMPILED = [(name, tuple(re.compile(p) for p in patterns)) for name, patterns in RULES]
 
@@ -167,12 +196,12 @@ def teach_phrase(text: str) -> str | None:
     return m.group(1).strip() if m else None
 
 
-#: intents that are always a new request, whatever question is pending
 #: intents that are never an answer to the robot's question: they drop it and are handled as
 #: themselves ("bye" while it asks "which table?")
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
-                          "seen_list", "no_arm", "want", "dont"})
+                          "seen_list", "no_arm", "want", "dont", "put_advice",
+                          "where_check"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

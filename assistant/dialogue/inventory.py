@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from assistant.dialogue.clarify import article
+from assistant.grounding.objects import article
 from assistant.dialogue.turns import NUMBER_WORDS, join_words
 from assistant.grounding.objects import plural, singular
 from assistant.grounding.vocabulary import canonical_word, furniture_category

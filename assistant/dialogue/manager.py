@@ -22,11 +22,11 @@ from __future__ import annotations
 import re
 import time
 
-from assistant.dialogue.clarify import (FURNITURE_CHOICES, article, choose_option, distinct_phrases,
+from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         unused_mentions)
 from assistant.dialogue.intents import (NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        teach_phrase)
+                                        teach_phrase, where_check_parts)
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
@@ -36,7 +36,7 @@ from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
-from assistant.grounding.objects import is_object_word, plural, singular
+from assistant.grounding.objects import article, is_object_word, plural, singular
 from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, furniture_category
 
@@ -48,6 +48,12 @@ ANYWHERE = (r"\b(anywhere|everywhere|any room|dont know|do not know|no idea|not 
             r"all over|whole (home|house|flat|apartment|place)|you find it|somewhere)\b")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
+
+
+def _seen_place(seen) -> str:
+    """Where a remembered sighting was, said after the thing: " on the table by the chair in the bedroom"."""
+    place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
+    return place + (f" in the {seen.room}" if seen.room else "")
 
 
 class DialogueManager:
@@ -178,6 +184,8 @@ class DialogueManager:
             return self._command(f"bring me {thing}", start, original=text)
         if name in ("where", "where_dynamic"):
             return self._where(text, intent, start)
+        if name == "where_check":
+            return self._where_check(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -258,9 +266,7 @@ class DialogueManager:
                               "something.", start=start)
         parts, ages = [], []
         for s in seen[:SEEN_LIST_MAX]:
-            place = s.phrase or (f"on the {s.furniture_word}" if s.furniture_word else "")
-            where = " ".join(p for p in (place, f"in the {s.room}" if s.room else "") if p)
-            parts.append(f"your {s.object} {where}".strip())
+            parts.append(f"your {s.object}{_seen_place(s)}")
             ages.append(self.memory.age(s))
         if len(set(ages)) > 1:  # each with its own time
             parts = [f"{p} ({age})" for p, age in zip(parts, ages)]
@@ -320,9 +326,7 @@ class DialogueManager:
         style = "dynamic" if intent.name == "where_dynamic" else "static"
         seen = self.memory.recall(self.world.name, obj)
         if seen is not None and style == "static":
-            place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
-            room = f" in the {seen.room}" if seen.room else ""
-            reply = f"I saw your {obj} {self.memory.age(seen)}{place}{room}. Shall I go and check?"
+            reply = f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}. Shall I go and check?"
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
@@ -354,6 +358,61 @@ class DialogueManager:
                  f"of the home.){offer}")
         return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
                           source="simulator", style=style, nodes=list(result.nodes), found=True)
+
+    def _where_check(self, text: str, intent, start: float) -> Turn:
+        """"is my mug in the bedroom?": yes or no from what the robot remembers, with an offer to
+        fetch it or to go and check that place; not remembered, it goes and looks there. A piece
+        of furniture ("is the couch in the living room?") is answered from the home's map."""
+        thing, place = where_check_parts(intent.text)
+        noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
+        obj = self._last_object() if noun in ("it", "they", "them") else self._object_in(thing)[0]
+        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
+        missing = unknown_room_named(place.split(), self.world) if room is None else None
+        if missing is not None:
+            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
+                              unknown_room=missing)
+        if obj is None:
+            found = matching(self.world.scene(self.scene).furniture, noun)
+            if found and room is not None:  # "is the couch in the living room?"
+                here = [f for f in found if f.room == room]
+                name = singular(noun)
+                homes = _join(sorted({"the " + f.room for f in found}))
+                reply = (f"Yes, there is {article(name)} {name} in the {room}." if here
+                         else f"No — the {name} is in {homes}." if len(found) == 1
+                         else f"No — the {plural(found[0].word)} are in {homes}.")
+                return self._turn(text, intent.name, reply, "answer", "answered", start, room=room)
+            if noun in ("it", "they", "them"):
+                return self._turn(text, intent.name, "Which of your things do you mean? Ask me, for example, \"is "
+                                  "my mug in the bedroom?\"", "clarify", "asked", start)
+            return self._where(text, Intent("where", f"where is the {noun}"), start)
+        check = f"find the {obj} {place}"
+        seen = self.memory.recall(self.world.name, obj)
+        if seen is None and not is_object_word(obj):  # a thing the parser has no word for: search for it
+            return self._where(text, Intent("where", f"where is the {obj}"), start)
+        if seen is None:  # nothing remembered: go and look there
+            turn = self._command(check, start, original=text)
+            if turn.action in ("fetch", "search"):
+                turn.reply = f"I haven't seen your {obj} yet, so I'll go and look. {turn.reply}"
+                self.last_said = turn.reply
+            return turn
+        words = [furniture_category(w) for w in place.split()]
+        word = next((w for w in words if w is not None), None)
+        agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word)
+        at = f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}"
+        if agrees:
+            self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
+                            "object": obj}
+            reply = f"Yes — {at}. Shall I go and get {it_them(obj)}?"
+        else:
+            self.pending = {"kind": "confirm", "command": check, "object": obj}
+            reply = f"Not when I last looked: {at}. Shall I go and check {place}?"
+        return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj, source="memory",
+                          memory=seen.to_dict(), agrees=agrees)
+
+    def _last_object(self) -> str | None:
+        """The thing the conversation was last about ("is *it* in the bedroom?")."""
+        return next((t.data["object"] for t in reversed(self.history) if t.data.get("object")), None)
 
     def _search(self, said: str, intent_name: str, obj: str, style: str, start: float,
                 lead: str | None = None) -> Turn:
@@ -480,6 +539,11 @@ class DialogueManager:
             items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]
             kinds = [f for f in items if any(d in f.model.split() for d in node.descriptors)]
             homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
+            # the furniture it is told by ("the table next to the bed"): only a room with that too
+            furniture = self.world.scene(self.scene).furniture
+            landmarks = {ref for n in plan.nodes for ref, _ in n.pairs if ref in FURNITURE_WORDS.values()}
+            told = [r for r in homes if all(any(f.room == r and f.word == w for f in furniture) for w in landmarks)]
+            homes = told or homes
             if len(homes) == 1:
                 room, text = homes[0], f"{text} in the {homes[0]}"
             elif homes and not force:

@@ -24,6 +24,8 @@ SOCIAL_REPLIES = {
                     "them. Say \"help\" for examples.",
     "no_arm": "I can't pick things up, carry them or open things: I have no arm. I can find your things, tell "
               "you where they are and take you to them — for example \"where is my mug?\" or \"go to the couch\".",
+    "put_advice": "That's up to you — wherever you'll think of looking. Once it's there, tell me, for example "
+                  "\"the mug is on the table in the bedroom\", and I'll go and have a look, so I know where it is.",
     "come_here": "I can't see where you are. Tell me where to go, for example \"go to the living room\".",
 }
 

@@ -16,6 +16,7 @@ from typing import NamedTuple
 
 from assistant.errors import AssistantError, UnknownNameError
 from assistant.generation.types import STYLES, GeneratedDescription
+from assistant.grounding.objects import article
 from assistant.perception.objects import Sighting
 
 __all__ = ["DYNAMIC_QUESTION_WORDS", "Describer", "room_only_description", "known_objects", "not_found_description", "OracleCase", "oracle_cases",
@@ -249,7 +250,7 @@ def some(name: str) -> str:
 
     if load_catalogue().number(name) != "one":
         return f"any {name}"
-    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
+    return f"{article(name)} {name}"
 
 
 def is_are(name: str) -> str:

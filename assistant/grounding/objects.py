@@ -122,6 +122,20 @@ def plural(phrase: str) -> str:
     return " ".join((*parts[:-1], w))
 
 
+#: word beginnings where the spelling misleads the sound: a vowel letter said with a consonant
+#: ("a unicorn", "a one-cup kettle") or a silent h ("an hour")
+_CONSONANT_SOUND = ("uni", "use", "usu", "usb", "ufo", "uk", "eu", "ewe", "one", "once", "ura", "ure", "uro")
+_VOWEL_SOUND = ("hour", "honest", "honour", "honor", "heir", "herb")
+
+
+def article(word: str) -> str:
+    """The indefinite article a word takes: "a" or "an" ("an envelope", "a unicorn", "an hour")."""
+    w = word.lower()
+    if w.startswith(_VOWEL_SOUND):
+        return "an"
+    return "an" if w[:1] in "aeiou" and not w.startswith(_CONSONANT_SOUND) else "a"
+
+
 def object_kind(phrase: str) -> str:
     """The catalogue's name of the object a phrase names ("ring of keys" → ``keys``, "phone" →
     ``cell phone``, "coffee cup" → ``mug``), trying the whole phrase, then without its first

@@ -1,6 +1,6 @@
 import pytest
 
-from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase
+from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase, where_check_parts
 
 
 @pytest.mark.parametrize("text,intent", [
@@ -96,3 +96,20 @@ def test_yes_said_in_more_than_one_word(text, intent):
                                   "never go into the bedroom"])
 def test_requests_not_to_do_something(text):
     assert classify(text).name == "dont"
+
+
+@pytest.mark.parametrize("text,intent,parts", [
+    ("is my mug in the bedroom?", "where_check", ("my mug", "in the bedroom")),
+    ("Are my keys still on the table?", "where_check", ("my keys", "on the table")),
+    ("did I leave my glasses next to the bed", "where_check", ("my glasses", "next to the bed")),
+    ("could the remote be in the living room", "where_check", ("the remote", "in the living room")),
+    ("is it in the hallway now?", "where_check", ("it", "in the hallway")),
+    ("have you seen my phone in the bedroom", "where_check", ("my phone", "in the bedroom")),
+    ("where should I put my keys?", "put_advice", None), ("where does the remote go", "put_advice", None),
+    ("is it on", "command", None), ("is there a couch in the living room", "furniture", None),
+    ("where is my mug", "where", None), ("are you there", "status", None),
+])
+def test_yes_or_no_place_questions_and_where_things_should_go(text, intent, parts):
+    found = classify(text)
+    assert found.name == intent
+    assert where_check_parts(found.text) == parts

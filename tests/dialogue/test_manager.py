@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from assistant.dialogue import DialogueManager, ObjectMemory, Services
+from assistant.dialogue.turns import SOCIAL_REPLIES
 
 sys.path.insert(0, str(Path(__file__).parent))
 from standins import fetch_result  # noqa: E402  (the dialogue tests' shared stand-in)
@@ -334,3 +335,42 @@ def test_dont_while_moving_stops_the_robot(services, tmp_path):
     assert m.handle("go into the bedroom").outcome == "started"
     assert m.handle("no don't go there").outcome == "stopped"
     m.wait(5)
+
+
+def test_is_it_there_is_answered_from_memory_or_looked_into(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    first = m.handle("is my mug in the bedroom?")  # nothing remembered: it goes and looks there
+    assert first.action == "fetch" and first.reply == ("I haven't seen your mug yet, so I'll go and look. "
+                                                       "Going to the bedroom.")
+    m.wait(10)
+    yes = m.handle("is my mug in the bedroom?")
+    assert yes.action == "answer" and yes.reply.startswith("Yes — I saw your mug just now on the table")
+    assert yes.reply.endswith("in the bedroom. Shall I go and get it?")
+    no = m.handle("is it in the living room?")  # "it": the mug the conversation is about
+    assert no.reply.startswith("Not when I last looked: I saw your mug") and no.data["agrees"] is False
+    assert no.reply.endswith("Shall I go and check in the living room?")
+    go = m.handle("yes")
+    assert go.action == "fetch" and go.reply == "Going to the living room."
+    m.wait(10)
+
+
+@pytest.mark.parametrize("said, reply", [
+    ("is the couch in the bedroom?", "No — the couch is in the living room."),
+    ("is the bed in the bedroom", "Yes, there is a bed in the bedroom."),
+    ("are my keys in the kitchen?", "There is no kitchen here; the rooms are the hallway, the living room and "
+                                    "the bedroom."),
+    ("is it on the couch?", "Which of your things do you mean? Ask me, for example, \"is my mug in the bedroom?\""),
+    ("where should I put my glasses?", SOCIAL_REPLIES["put_advice"]),
+])
+def test_place_questions_answered_without_moving(services, tmp_path, said, reply):
+    m = make(services, tmp_path, StandInFetcher())
+    turn = m.handle(said)
+    assert (turn.reply, turn.action != "fetch") == (reply, True)
+
+
+def test_the_furniture_a_place_is_told_by_picks_the_room(services, tmp_path):
+    # tables are in the living room and the bedroom; the bed only in the bedroom
+    m = make(services, tmp_path, StandInFetcher())
+    turn = m.handle("I put my glasses on the table next to the bed")
+    assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
+    m.wait(10)
