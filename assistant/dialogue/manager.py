@@ -46,6 +46,9 @@ PLACE_QUESTION = (r"(?:(?:and|so|ok|okay|um|robot) )*(?:where(?: is| are| s)?|wh
 #: an answer to "which room?" that leaves it to the robot
 ANYWHERE = (r"\b(anywhere|everywhere|any room|dont know|do not know|no idea|not sure|no clue|search|look around|"
             r"all over|whole (home|house|flat|apartment|place)|you find it|somewhere)\b")
+#: the start of a correction of the furniture the robot went to ("no, the other one", "wrong one")
+CORRECTION = (r"^(?:(?:no|nope|nah|not that one|not that|not this one|wrong one|the wrong one|thats the wrong one|"
+              r"wrong|sorry|oh|i meant|i mean|actually|i said)(?: |$))+|^(?=(?:the )?other\b)")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
 
@@ -66,6 +69,9 @@ class DialogueManager:
     """
 
     _redirected = False  # the command being handled stopped a search for the thing it names
+    #: the which-question last answered and the option taken ({... "options", "chosen": index}),
+    #: for "no, the other one"; None once another request is made
+    last_choice: dict | None = None
 
     def __init__(self, world="apartment", scene: str = "original", services: Services | None = None,
                  memory: ObjectMemory | None = None, say=None, on_event=None, on_finish=None, on_pose=None):
@@ -192,6 +198,9 @@ class DialogueManager:
             if self.stop():
                 return self._turn(text, name, "OK, I won't — stopping.", "stop", "stopped", start)
             return self._turn(text, name, "OK, I won't.", start=start)
+        other = self._other_one(text, intent.text, start)
+        if other is not None:
+            return other
         bare = re.sub(r"^(the|my|a|an|your|our) ", "", intent.text)
         if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare
                                                 or matching(self.world.scene(self.scene).furniture, bare)):
@@ -465,6 +474,7 @@ class DialogueManager:
 
     def _command(self, text: str, start: float, force: bool = False, original: str | None = None) -> Turn:
         self._redirected = False
+        self.last_choice = None
         turn = self._command_turn(text, start, force, original)
         if self._redirected and turn.reply:  # a search stopped for what the person just told
             turn.reply = f"OK, I'll stop searching. {turn.reply}"
@@ -676,11 +686,7 @@ class DialogueManager:
             index = self._choose(norm, text, p)
             if index is not None:
                 self.pending = None
-                option = p["options"][index]
-                command = fetch_command_text(p["object"], option["phrase"], option["room"])
-                turn = self._command(command, start, force=True, original=text)
-                turn.data["chosen"] = option["id"]
-                return turn
+                return self._fetch_option(text, p, index, start)
             pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
             if intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text)):
                 self.pending = None
@@ -688,6 +694,59 @@ class DialogueManager:
             return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]
                               + " (You can also say \"the first\" or \"never mind\".)", "clarify", "asked", start)
         return None
+
+    def _fetch_option(self, text: str, asked: dict, index: int, start: float, lead: str = "") -> Turn:
+        """Fetch from the ``index``-th option of a which-question (``asked``: the pending
+        question); remembered with the options tried so far, so "no, the other one" can turn
+        to another."""
+        option = asked["options"][index]
+        command = fetch_command_text(asked["object"], option["phrase"], option["room"])
+        turn = self._command(command, start, force=True, original=text)
+        turn.data["chosen"] = option["id"]
+        if turn.action == "fetch":
+            every = asked.get("all", asked["options"])
+            self.last_choice = {**asked, "options": every, "all": every,
+                                "tried": [*asked.get("tried", []), option["id"]]}
+            if lead:
+                turn.reply = f"{lead} {turn.reply}"
+                self.last_said = turn.reply
+        return turn
+
+    def _other_one(self, text: str, norm: str, start: float) -> Turn | None:
+        """"no, the other one", "wrong one", "not that one — the one by the chair" after the robot
+        went to the piece of furniture picked from a which-question: another of those options (the
+        only one not tried yet, or the one pointed at, or the question again without the ones
+        tried); a task still running is stopped first. None when the words are not such a
+        correction."""
+        last = self.last_choice
+        m = re.match(CORRECTION, norm)
+        if last is None or m is None:
+            return None
+        rest = norm[m.end():].strip()
+        word = last.get("word") or "table"
+        if rest not in ("", "other", "the other", "other one", "the other one", f"the other {word}") \
+                and not rest.startswith(("the one", "that one", "one ", f"the {word}", "the other one ")):
+            return None
+        others = [o for o in last["options"] if o["id"] not in last["tried"]] \
+            or [o for o in last["options"] if o["id"] != last["tried"][-1]]  # each tried: all but the last
+        if not others:
+            return None
+        if self.busy:
+            self.worker.stop(quiet=True)
+        remaining = {**last, "options": others}
+        index = None
+        if len(others) == 1:
+            index = 0
+        elif rest.startswith(("the one", "that one", "one ", f"the {word} ")):
+            index = self._choose(rest, rest, remaining)
+        if index is not None:
+            phrase = re.sub(r"^(?:on|at|by|in) ", "", others[index]["phrase"])
+            return self._fetch_option(text, remaining, index, start, lead=f"Sorry — {phrase}, then.")
+        said = [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in others]
+        reply = f"Sorry — which {word}, then: {_join(said, 'or')}?"
+        self.pending = {**remaining, "kind": "which", "asked": reply}
+        self.last_choice = None
+        return self._turn(text, "command", reply, "clarify", "asked", start, options=others)
 
     def _is_request(self, text: str) -> bool:
         """Whether an answer to a question is rather a new request: it names an object, a place

@@ -374,3 +374,37 @@ def test_the_furniture_a_place_is_told_by_picks_the_room(services, tmp_path):
     turn = m.handle("I put my glasses on the table next to the bed")
     assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
     m.wait(10)
+
+
+def test_no_the_other_one_turns_to_another_of_the_options(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the mug from the table in the bedroom").action == "clarify"
+    first = m.handle("the one to the left of the bed")
+    tried = first.data["chosen"]
+    m.wait(10)
+    again = m.handle("no, the other one")  # two are left: which of them
+    assert again.action == "clarify" and again.reply.startswith("Sorry — which table, then: the one to the right")
+    assert tried not in [o["id"] for o in again.data["options"]] and len(again.data["options"]) == 2
+    second = m.handle("the one by the chair")
+    assert second.action == "fetch" and second.data["chosen"] not in (tried, None)
+    m.wait(10)
+    third = m.handle("wrong one")  # one left untried: that one
+    assert third.action == "fetch" and third.reply == ("Sorry — the table to the right of the bed, then. "
+                                                       "Going to the bedroom.")
+    assert third.data["chosen"] not in (tried, second.data["chosen"])
+    m.wait(10)
+    assert m.handle("no, go to the living room").reply == "Going to the living room."  # a new request
+    m.wait(10)
+    assert m.handle("the other one").action != "fetch"  # nothing chosen any more
+
+
+def test_the_other_one_said_while_driving_stops_and_turns(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(hold=True))
+    m.handle("bring me the mug from the table in the bedroom")
+    first = m.handle("the second one")
+    assert first.action == "fetch" and m.busy
+    turn = m.handle("not that one, the one by the chair")
+    assert turn.action == "fetch" and turn.outcome == "started" and turn.data["chosen"] != first.data["chosen"]
+    assert turn.reply.startswith("Sorry — the table to the right of the chair, then.")
+    m.stop()
+    m.wait(5)
