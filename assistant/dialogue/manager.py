@@ -401,6 +401,7 @@ class DialogueManager:
             return self._where(text, Intent("where", f"where is the {obj}"), start)
         if seen is None:  # nothing remembered: go and look there
             turn = self._command(check, start, original=text)
+            turn.intent = intent.name
             if turn.action in ("fetch", "search"):
                 turn.reply = f"I haven't seen your {obj} yet, so I'll go and look. {turn.reply}"
                 self.last_said = turn.reply
