@@ -57,14 +57,20 @@ def world_environment(world, scene: str) -> list:
 
 def asked_object(said: str) -> str:
     """The name to look for when a person asks for ``said``: the catalogue's name of the thing
-    ("my keys" → ``keys``, "phone" → ``cell phone``, "key" → ``keys``), else the words in the
-    singular without "my"/"the" ("my umbrellas" → ``umbrella``)."""
-    from assistant.grounding.objects import object_kind
+    ("my keys" → ``keys``, "phone" → ``cell phone``, "key" → ``keys``), else the words without
+    "my"/"the" in the number they were said in ("my umbrella" → ``umbrella``, "my slippers" →
+    ``slippers``: no detector knows such a thing by name, and the answer says it back)."""
+    from assistant.grounding.objects import is_object_word, object_kind, plural
 
     words = " ".join(str(said).lower().split()).split()
     while len(words) > 1 and words[0] in POSSESSIVES:
         words.pop(0)
-    return object_kind(" ".join(words)) if words else ""
+    if not words:
+        return ""
+    kind = object_kind(" ".join(words))
+    if not is_object_word(kind) and words[-1] == plural(kind).split()[-1] != kind.split()[-1]:
+        return plural(kind)
+    return kind
 
 
 def known_object_names(world) -> list[str]:

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from assistant.app import known_object_names
 from assistant.dialogue.intents import ordinal_choice
-from assistant.grounding.objects import article, object_phrase
+from assistant.grounding.objects import article, object_phrase, plural
 
 #: furniture words the robot can be told an unknown word stands for
 FURNITURE_CHOICES = ("table", "chair", "couch", "bed")
@@ -234,10 +234,31 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
         noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on|anywhere|somewhere|everywhere|around|"
                       r"lately|recently|today|yesterday|here|there|too|at all)\b", "", m.group(1)).strip()
         found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
+        meant = known_spelling(noun, known) if found is not None else None
+        if meant is not None:  # "wheres my lapptop": the laptop
+            return meant, None
         if found is not None:  # any thing can be asked about (issue 16)
-            return found.kind, None
+            said = plural(found.kind)  # a thing the catalogue does not know keeps its number: "my slippers"
+            return (said if noun.split()[-1] == said.split()[-1] else found.kind), None
         return None, noun or None
     return None, None
+
+
+def known_spelling(noun: str, known) -> str | None:
+    """The known object name a typed noun misspells ("lapptop" → "laptop", "glases case" →
+    "glasses case"), or None: the same first letter, one edit away (two from 8 letters on),
+    5 letters or more (a shorter word one edit from a name is as often another word: "boot"),
+    and not the plural or another longer word of a known name ("laptops")."""
+    from rapidfuzz import process
+    from rapidfuzz.distance import OSA
+
+    if len(noun) < 5:
+        return None
+    limit = 2 if len(noun) >= 8 else 1
+    for name, _, _ in process.extract(noun, list(known), scorer=OSA.distance, score_cutoff=limit, limit=5):
+        if name[0] == noun[0] and not noun.startswith(name):
+            return name
+    return None
 
 
 def fetch_command_text(obj: str | None, phrase: str | None, room: str | None) -> str:

@@ -20,7 +20,9 @@ WANTED = (r"^(?:(?:um|uh|so|ok|okay|well|oh|robot|hey robot|please) )*(?:i need|
 
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
-    ("stop", (r"^(please )?(stop|halt|freeze|wait|hold on|stay)( (it|now|there|right now|please|moving|that))*$",
+    ("stop", (r"^(?:(?:hang on|hold on|oh|ok|okay|no|please|robot|hey|wait|just|right|whoa|woah|stop) )*(please )?"
+              r"(stop|halt|freeze|wait|hold on|hang on|stay)( (it|now|there|right now|please|moving|that|robot|"
+              r"a (second|sec|moment|minute)|a sec|for a (second|moment|minute)))*$",
               r"^(stop|halt) (it|now|please)\b")),
     ("cancel", (r"^(please )?(cancel|never ?mind|forget (it|that|about it)|abort|no never ?mind)\b",
                 r"^(no )?(it doesnt|it does not) matter\b")),
@@ -40,14 +42,19 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("status", (r"^" + ADDRESS + r"(where are you|what are you doing|what are you up to|are you (done|finished|busy|"
                 r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
                 r"( now| robot| right now)?$",)),
-    ("come_here", (r"^" + ADDRESS + r"(please )?(come|come here|come back|come to me|come over here|over here|follow me|"
-                   r"come and find me)( please| robot| now)*$",)),
+    ("come_here", (r"^(?:(?:no|ok|okay|oh|please|robot|hey|right|actually) )*" + ADDRESS + r"(please )?(come|come here|"
+                   r"come back|come to me|come over here|over here|follow me|come and find me|come back here)"
+                   r"( please| robot| now| here| to me)*$",)),
+    # go on with the task stopped last ("ok, carry on", "you can continue now")
+    ("resume", (r"^(?:(?:ok|okay|alright|right|yes|yeah|sorry|fine|oh) )*(?:you can |please |ok you can )?(?:carry on|"
+                r"continue|keep going|go on|resume|proceed|go ahead and finish|finish (?:it|that|what you were doing)|"
+                r"get going again|off you go)(?: please| now| then| with (?:it|that|what you were doing)| robot)*$",)),
     ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
     ("no_arm", (r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:put|place|drop|set down|"
                 r"carry|throw|pour|wash|clean|tidy|cook|open|close|shut|lock|unlock|fold|water|feed|push|lift|pick up)"
-                r" (?!(?:me|us|to|up)\b)[a-z]",)),
+                r" (?!(?:me|us|to|up|on)\b)[a-z]",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
@@ -63,7 +70,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                     r"\bwhere (?:does|do) (?:my|the|our|his|her|this|that|these|those) [a-z]+(?: [a-z]+)? (?:go|belong|live)"
                     r"(?: now)?$")),
     ("where_check", None),  # WHERE_CHECKS, below: "is my mug in the bedroom?"
-    ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow do i find\b",
+    ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow (do|can|would|should) i (get|go) there\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
                # typed in a hurry: "wher is my mug", "whre are my keys"
@@ -201,7 +208,7 @@ def teach_phrase(text: str) -> str | None:
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
-                          "where_check"})
+                          "where_check", "resume"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

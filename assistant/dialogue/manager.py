@@ -19,6 +19,7 @@ context ("the one with the chairs", "the second", "never mind"). Unknown words a
 
 from __future__ import annotations
 
+import math
 import re
 import time
 
@@ -165,6 +166,11 @@ class DialogueManager:
             self.stop()
             return self._turn(text, name, "OK, let's start over. What can I do for you?", "none",
                               "cancelled", start)
+        if name == "resume":  # "ok, carry on": the task stopped last; else a yes to a pending question
+            if self.worker.stopped is not None or self.busy or self.pending is None:
+                self.pending = None
+                return self._resume(text, start)
+            intent = Intent("yes", intent.text)
         if self.pending is not None:
             turn = self._resolve(text, intent, start)
             if turn is not None:
@@ -209,6 +215,23 @@ class DialogueManager:
         return self._command(text, start)
 
     # ------------------------------------------------------------------ stop / wait
+    def _resume(self, text: str, start: float) -> Turn:
+        """"carry on": start again the task a person stopped, from where the robot is now."""
+        if self.busy:
+            doing = self.activity
+            return self._turn(text, "resume", f"I'm still {doing[0] if doing else 'at it'}.", start=start)
+        job = self.worker.stopped
+        if job is None:
+            return self._turn(text, "resume", "There's nothing I was stopped in the middle of. What can I do for "
+                              "you?", start=start)
+        kind, task_text, room, obj, style = job.args
+        data = {"object": obj, "room": room, "resumed": True}
+        if kind == "fetch":
+            data["command"] = task_text
+        what = f"going to the {room}" if job.what == "on my way" and room else job.what
+        return self._start_job(kind, text, f"OK, carrying on — {what}.", task_text, room, obj, start,
+                               intent_name="resume", style=style, **data)
+
     def _do_stop(self, text, start, intent_name="stop") -> Turn:
         self.pending = None
         if self.stop():
@@ -314,6 +337,8 @@ class DialogueManager:
             self.last_said = turn.reply
             return turn
         obj, unknown = self._object_in(intent.text)
+        if obj is None and unknown is None and re.search(r"\b(it|they|them|there)\b", intent.text):
+            obj = self._last_object()  # "where did you see it?", "how do I get there?"
         if obj is None and unknown and re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text):
             # "where is the bedroom?", "where's the couch?": a place, not a thing
             place = self._place_asked(text, intent, unknown, start)
@@ -719,15 +744,18 @@ class DialogueManager:
         only one not tried yet, or the one pointed at, or the question again without the ones
         tried); a task still running is stopped first. None when the words are not such a
         correction."""
-        last = self.last_choice
         m = re.match(CORRECTION, norm)
-        if last is None or m is None:
+        if m is None:
             return None
+        last = self.last_choice or self._last_visited()
         rest = norm[m.end():].strip()
-        word = last.get("word") or "table"
-        if rest not in ("", "other", "the other", "other one", "the other one", f"the other {word}") \
+        word = (last or {}).get("word") or "table"
+        if rest not in ("", "other", "the other", "other one", "the other one", word, f"the other {word}") \
                 and not rest.startswith(("the one", "that one", "one ", f"the {word}", "the other one ")):
             return None
+        if last is None:
+            return self._turn(text, "command", "Which one do you mean? Tell me the place, for example \"the table "
+                              f"by the chair in the {self.rooms[-1]}\".", "clarify", "asked", start)
         others = [o for o in last["options"] if o["id"] not in last["tried"]] \
             or [o for o in last["options"] if o["id"] != last["tried"][-1]]  # each tried: all but the last
         if not others:
@@ -745,9 +773,33 @@ class DialogueManager:
             return self._fetch_option(text, remaining, index, start, lead=f"Sorry — {phrase}, then.")
         said = [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in others]
         reply = f"Sorry — which {word}, then: {_join(said, 'or')}?"
-        self.pending = {**remaining, "kind": "which", "asked": reply}
+        self.pending = {**remaining, "kind": "which", "asked": f"Which {word} do you mean: {_join(said, 'or')}?"}
         self.last_choice = None
         return self._turn(text, "command", reply, "clarify", "asked", start, options=others)
+
+    def _last_visited(self) -> dict | None:
+        """The piece of furniture the last fetch went to, as a which-question among the pieces of
+        its kind in its room (the one visited tried), when there are several; else None. A
+        detected piece (sensed perception) is the world's piece of that kind nearest its centre."""
+        turn = next((t for t in reversed(self.history) if t.action == "fetch" and t.final), None)
+        target = (turn.data.get("target_furniture") or {}) if turn is not None else {}
+        furniture = self.world.scene(self.scene).furniture
+        item = next((f for f in furniture if f.id == target.get("id")), None)
+        if item is None and target.get("centre") is not None:
+            kind = [f for f in furniture if f.word == furniture_category(str(target.get("name", "")))]
+            near = sorted(kind, key=lambda f: math.dist((f.x, f.y), target["centre"][:2]))
+            item = near[0] if near and math.dist((near[0].x, near[0].y), target["centre"][:2]) < 1.0 else None
+        if item is None:
+            return None
+        items = [f for f in furniture if f.word == item.word and f.room == item.room]
+        if len(items) < 2:
+            return None
+        describer = self.services.describer
+        options = [{"id": f.id, "phrase": furniture_phrase(describer, self.world, self.scene, f), "room": f.room,
+                    "model": f.model} for f in items]
+        return {"word": item.word, "room": item.room, "object": turn.data.get("object") or self._last_object(),
+                "options": options,
+                "all": options, "tried": [item.id], "text": turn.data.get("command", ""), "original": turn.text}
 
     def _is_request(self, text: str) -> bool:
         """Whether an answer to a question is rather a new request: it names an object, a place

@@ -36,6 +36,9 @@ class Job:
     started: float = 0.0  # time.monotonic() when the job started
     object: str | None = None  # the thing fetched or searched for
     quiet: bool = False  # replaced by another task: its end is not said (its final turn is still kept)
+    #: what started it (``TaskWorker.start``'s arguments), so a stopped task can be carried on
+    args: tuple = ()
+    what: str = ""  # what it set out to do ("fetching the mug"), said when it is carried on
 
 
 class TaskWorker:
@@ -77,6 +80,14 @@ class TaskWorker:
             return True
         return False
 
+    @property
+    def stopped(self) -> Job | None:
+        """The last task when a person stopped it (not when another task replaced it), else None."""
+        job = self.job
+        if job is None or self.busy or job.quiet or job.thread.is_alive() or job.final is None:
+            return None
+        return job if job.final.outcome == "stopped" else None
+
     def wait(self, timeout: float | None = None) -> Turn | None:
         """The last task's final turn once it has ended (None if none ran or it still runs)."""
         job = self.job
@@ -95,7 +106,7 @@ class TaskWorker:
         previous = self.job
         doing = f"looking for your {text}" if kind == "search" else (f"fetching the {obj}" if obj else "on my way")
         job = Job(threading.Event(), kind=kind, doing=doing, started=time.monotonic(),
-                  object=text if kind == "search" else obj)
+                  object=text if kind == "search" else obj, args=(kind, text, room, obj, style), what=doing)
         job.thread = threading.Thread(target=self._run, args=(job, previous, text, room, obj, style),
                                       name=f"assistant-{kind}", daemon=True)
         self.job = job

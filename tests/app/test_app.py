@@ -138,7 +138,8 @@ def test_what_a_person_asks_for_is_the_name_looked_for():
 
     assert asked_object("my keys") == "keys" and asked_object("key") == "keys"
     assert asked_object("my phone") == "cell phone" and asked_object("The Wallet") == "wallet"
-    assert asked_object("my umbrellas") == "umbrella" and asked_object("glasses case") == "glasses case"
+    assert asked_object("my umbrellas") == "umbrellas" and asked_object("my umbrella") == "umbrella"
+    assert asked_object("glasses case") == "glasses case" and asked_object("my mugs") == "mug"
 
 
 def test_where_is_my_wallet_in_a_lived_in_home(apartment):

@@ -113,3 +113,13 @@ def test_yes_or_no_place_questions_and_where_things_should_go(text, intent, part
     found = classify(text)
     assert found.name == intent
     assert where_check_parts(found.text) == parts
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("hang on, stop please", "stop"), ("oh please stop", "stop"), ("wait a minute", "stop"), ("no no stop", "stop"),
+    ("no no, come back", "come_here"), ("ok come back here", "come_here"),
+    ("ok carry on", "resume"), ("ok, you can carry on now", "resume"), ("continue", "resume"),
+    ("keep going please", "resume"), ("carry the mug to me", "no_arm"), ("how do I get there?", "where_dynamic"),
+])
+def test_stopping_and_carrying_on_said_the_way_people_say_it(text, intent):
+    assert classify(text).name == intent

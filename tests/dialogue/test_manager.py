@@ -408,3 +408,42 @@ def test_the_other_one_said_while_driving_stops_and_turns(services, tmp_path):
     assert turn.reply.startswith("Sorry — the table to the right of the chair, then.")
     m.stop()
     m.wait(5)
+
+
+def test_carry_on_starts_the_stopped_task_again(services, tmp_path):
+    fetcher = StandInFetcher(hold=True)
+    m = make(services, tmp_path, fetcher)
+    assert m.handle("carry on").reply.startswith("There's nothing I was stopped in the middle of")
+    m.handle("go to the bedroom")
+    assert m.handle("hang on, stop please").outcome == "stopped"
+    m.wait(5)
+    again = m.handle("ok, you can carry on now")
+    assert (again.action, again.outcome, again.reply) == ("fetch", "started", "OK, carrying on — going to the bedroom.")
+    assert fetcher.texts[-1] == fetcher.texts[0] and m.busy
+    assert m.handle("continue").reply.startswith("I'm still")
+    m.stop()
+    m.wait(5)
+
+
+def test_it_there_and_typed_names_follow_the_conversation(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("where did you see it?").action == "clarify"  # nothing talked about yet
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    it = m.handle("where did you see it?")
+    assert it.data["object"] == "mug" and it.reply.startswith("I saw your mug just now")
+    assert m.handle("wheres my lapptop").data.get("object") == "laptop"
+    assert m.handle("could you pop into the living room").reply == "Going to the living room."
+    m.wait(10)
+
+
+def test_not_that_table_after_a_fetch_that_chose_one(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("no, the other one").reply.startswith("Which one do you mean?")  # no fetch yet
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)  # the stand-in went to hexagontable_1, one of the bedroom's three tables
+    turn = m.handle("not that table")
+    assert turn.action == "clarify" and turn.reply.startswith("Sorry — which table, then:")
+    assert "hexagontable_1" not in [o["id"] for o in turn.data["options"]] and len(turn.data["options"]) == 2
+    assert m.handle("the first one").action == "fetch"
+    m.wait(10)
