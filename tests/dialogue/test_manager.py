@@ -433,7 +433,8 @@ def test_it_there_and_typed_names_follow_the_conversation(services, tmp_path):
     it = m.handle("where did you see it?")
     assert it.data["object"] == "mug" and it.reply.startswith("I saw your mug just now")
     assert m.handle("wheres my lapptop").data.get("object") == "laptop"
-    m.wait(10)
+    m.stop()  # the search it started
+    m.wait(30)
     assert m.handle("could you pop into the living room").reply == "Going to the living room."
     m.wait(10)
 
