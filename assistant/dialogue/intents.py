@@ -20,6 +20,12 @@ WANTED = (r"^(?:(?:um|uh|so|ok|okay|well|oh|robot|hey robot|please) )*(?:i need|
 
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
+    # a person in danger: before anything else, whatever else the words say
+    ("emergency", (r"\b(ive|i have|i|has|have|hes|shes|weve) (fallen|fell|had a fall|collapsed)\b",
+                   r"\b(cant|can not|cannot) (get up|breathe|move my)\b", r"\bcall (an ambulance|911|999|112|the doctor|"
+                   r"a doctor|for help|the police|the fire brigade)\b", r"\b(emergency|ambulance|heart attack|chest pain|"
+                   r"bleeding|im hurt|i am hurt|ive hurt myself|i hurt myself|im injured)\b",
+                   r"^(help|help me|please help|help me please)( (me|please|robot))*( i .+)$")),
     ("stop", (r"^(?:(?:hang on|hold on|oh|ok|okay|no|please|robot|hey|wait|just|right|whoa|woah|stop) )*(please )?"
               r"(stop|halt|freeze|wait|hold on|hang on|stay)( (it|now|there|right now|please|moving|that|robot|"
               r"a (second|sec|moment|minute)|a sec|for a (second|moment|minute)))*$",
@@ -31,7 +37,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"look|search|touch|enter|leave)\b",)),
     ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
                 r"^(pardon|sorry what|what|huh|repeat)$")),
-    ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bhow do(es)? (this|you) work\b",
+    ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bwhat (can|could) you help (me )?with\b",
+              r"\bhow (can|could) you help( me)?\b", r"\bwhat (are|is) you (for|good at)\b", r"\bhow do(es)? (this|you) work\b",
               r"\bwhat do you (understand|know how to do)\b", r"^(commands|options)$")),
     ("which_home", (r"\b(which|what) (home|house|world|flat|apartment|place) (am i|are we|is this)\b",
                     r"\bwhere am i\b", r"\bwhere are we\b", r"\bwhich rooms\b", r"\bwhat rooms\b")),
@@ -49,6 +56,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("resume", (r"^(?:(?:ok|okay|alright|right|yes|yeah|sorry|fine|oh) )*(?:you can |please |ok you can )?(?:carry on|"
                 r"continue|keep going|go on|resume|proceed|go ahead and finish|finish (?:it|that|what you were doing)|"
                 r"get going again|off you go)(?: please| now| then| with (?:it|that|what you were doing)| robot)*$",)),
+    ("wellbeing", (r"^" + ADDRESS + r"(how are you|how are you doing|how are things|hows it going with you|"
+                   r"are you (ok|okay|alright|well))( today| robot| this morning| this evening)?$",)),
+    ("listening", (r"^" + ADDRESS + r"(are you (listening|awake|on|there|with me)|can you hear me|do you hear me)"
+                   r"( robot| now)?$",)),
     ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
@@ -56,6 +67,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"carry|throw|pour|wash|clean|tidy|cook|open|close|shut|lock|unlock|fold|water|feed|push|lift|pick up)"
                 r" (?!(?:me|us|to|up|on)\b)[a-z]",)),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
+                      r"\b(call|phone|ring|text|email|message|video call) (my|the|someone|somebody|a|an|him|her|them)\b",
+                      r"\b(make|cook|get|bring|fix) (me |us )?(a |some )?(cup of |mug of )?(tea|coffee|dinner|lunch|"
+                      r"breakfast|food|a sandwich|something to eat|a drink)\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
                    r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
@@ -91,7 +105,11 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                # a loss told rather than asked: "I can't find my keys", "I've lost my wallet"
                r"\b(cant|can not|cannot|couldnt|could not) find (my|our|the|his|her)\b",
                r"\b(ive|i have|i|weve|we have|we|she|he|has) (lost|misplaced|mislaid)\b",
-               r"\bhelp me (find|look for)\b", r"^(you|anyone|anybody|has anyone|has anybody) seen\b")),
+               r"\bhelp me (find|look for)\b", r"^(you|anyone|anybody|has anyone|has anybody) seen\b",
+               # about the thing just talked of: "which room is it in?", "where exactly?", "which table exactly?"
+               r"^(?:(?:and|so|ok|okay|but) )*which (room|table|one|place|chair|bit of the room) (is|are) (it|they|that|"
+               r"those) (in|on|at)$", r"^(?:(?:and|so|ok|okay|but) )*(where|which (room|table|one|place)) "
+               r"(exactly|precisely|then)$")),
     ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
              r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),
     ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
@@ -99,11 +117,15 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
              # said together: "sure, go ahead", "yes please do", "ok go and get it"
              r"^(yes|yeah|yep|yup|sure|ok|okay|alright|please|of course)( (yes|please|sure|go ahead|do it|please do|"
              r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not))+$")),
-    ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",)),
+    ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",
+            r"^(no|nope|nah|not|not now|not right now|not yet|maybe later|later|no need|its fine|its ok|"
+            r"(no )?(just )?leave (it|them)( there| be| alone)?)( thanks| thank you| robot| then| for now)*$")),
     ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",)),
-    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",
-                r"^(that is |thats |very )?(good robot|good boy|good girl|nice work|nice one|great|awesome|perfect|"
-                r"brilliant|excellent|wonderful|lovely)( robot)?$")),
+    ("praise", (r"^(that is |thats |very |youre a |you are a |what a )?(good robot|good boy|good girl|nice work|nice one|"
+                r"great job|well done|good job|clever (robot|thing|little thing|boy|girl)|great|awesome|perfect|"
+                r"brilliant|excellent|wonderful|lovely|clever)( robot| thanks| thank you)*$",
+                r"^(youre|you are) (so |very |a )?(clever|smart|good|great|helpful|brilliant)\b")),
+    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",)),
     ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),
 ]
 
@@ -208,7 +230,8 @@ def teach_phrase(text: str) -> str | None:
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
-                          "where_check", "resume"})
+                          "where_check", "resume", "emergency", "wellbeing", "listening",
+                          "praise"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

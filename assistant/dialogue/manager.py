@@ -49,7 +49,10 @@ ANYWHERE = (r"\b(anywhere|everywhere|any room|dont know|do not know|no idea|not 
             r"all over|whole (home|house|flat|apartment|place)|you find it|somewhere)\b")
 #: the start of a correction of the furniture the robot went to ("no, the other one", "wrong one")
 CORRECTION = (r"^(?:(?:no|nope|nah|not that one|not that|not this one|wrong one|the wrong one|thats the wrong one|"
-              r"wrong|sorry|oh|i meant|i mean|actually|i said)(?: |$))+|^(?=(?:the )?other\b)")
+              r"wrong|sorry|oh|i meant|i mean|actually|i said|try|check|look at|go to)(?: |$))+|^(?=(?:the )?other\b)")
+#: a request about the thing just talked of, said with "it" ("can you bring it to me?", "take me to it")
+IT_REQUEST = (r"\b(bring|get|fetch|find|show) (me )?(it|them)\b|\b(take|lead|guide) me to (it|them)\b|"
+              r"\b(go|drive) (to|and (get|find|check|look at)) (it|them)\b")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
 
@@ -141,6 +144,10 @@ class DialogueManager:
                 return self._turn(text, name, "Sorry, I didn't catch any words there. "
                                   "Say \"help\" for what you can ask me.", start=start)
             return self._turn(text, name, "", "none", "answered", start)
+        if name == "emergency":  # stop whatever it does and say what to do, before anything else
+            self.pending = None
+            self.stop()
+            return self._turn(text, name, SOCIAL_REPLIES[name], "stop", "answered", start)
         if name == "stop":
             return self._do_stop(text, start)
         if name == "cancel":
@@ -207,6 +214,9 @@ class DialogueManager:
         other = self._other_one(text, intent.text, start)
         if other is not None:
             return other
+        last = self._last_object() if re.search(r"\b(it|them)\b", intent.text) else None
+        if last is not None and re.search(IT_REQUEST, intent.text):  # "bring it to me", "take me to it"
+            return self._command(re.sub(r"\b(it|them)\b", f"the {last}", intent.text, count=1), start, original=text)
         bare = re.sub(r"^(the|my|a|an|your|our) ", "", intent.text)
         if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare
                                                 or matching(self.world.scene(self.scene).furniture, bare)):
@@ -314,7 +324,11 @@ class DialogueManager:
         furniture = self.world.scene(self.scene).furniture
         if what and what not in ANYTHING and not matching(furniture, what) \
                 and furniture_category(singular(what)) is None:
-            if self._object_in(intent.text)[0] is not None:  # "is there a mug in the bedroom?"
+            thing = self._object_in(intent.text)[0]
+            if thing is not None:  # "is there a mug in the bedroom?": is it there / where is it
+                room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+                if room is not None:
+                    return self._where_check(text, Intent("where_check", f"is the {thing} in the {room}"), start)
                 return self._where(text, Intent("where", intent.text), start)
             return self._command(text, start)
         room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
@@ -337,8 +351,8 @@ class DialogueManager:
             self.last_said = turn.reply
             return turn
         obj, unknown = self._object_in(intent.text)
-        if obj is None and unknown is None and re.search(r"\b(it|they|them|there)\b", intent.text):
-            obj = self._last_object()  # "where did you see it?", "how do I get there?"
+        if obj is None and unknown is None:
+            obj = self._last_object()  # "where did you see it?", "how do I get there?", "where exactly?"
         if obj is None and unknown and re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text):
             # "where is the bedroom?", "where's the couch?": a place, not a thing
             place = self._place_asked(text, intent, unknown, start)
@@ -401,13 +415,18 @@ class DialogueManager:
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
         obj = self._last_object() if noun in ("it", "they", "them") else self._object_in(thing)[0]
         room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
+        word = next((w for w in map(furniture_category, place.split()) if w is not None), None)
+        furniture = self.world.scene(self.scene).furniture
+        homes = sorted({f.room for f in furniture if f.word == word})
+        if room is None and len(homes) == 1:  # "near the bed": the one room with a bed
+            room = homes[0]
         missing = unknown_room_named(place.split(), self.world) if room is None else None
         if missing is not None:
             return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
                               f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
                               unknown_room=missing)
         if obj is None:
-            found = matching(self.world.scene(self.scene).furniture, noun)
+            found = matching(furniture, noun)
             if found and room is not None:  # "is the couch in the living room?"
                 here = [f for f in found if f.room == room]
                 name = singular(noun)
@@ -424,6 +443,10 @@ class DialogueManager:
         seen = self.memory.recall(self.world.name, obj)
         if seen is None and not is_object_word(obj):  # a thing the parser has no word for: search for it
             return self._where(text, Intent("where", f"where is the {obj}"), start)
+        if seen is None and self.services.search_mode != "sensed":  # the simulator's map answers (oracle)
+            mapped = self._from_map(text, intent, obj, room, start)
+            if mapped is not None:
+                return mapped
         if seen is None:  # nothing remembered: go and look there
             turn = self._command(check, start, original=text)
             turn.intent = intent.name
@@ -431,8 +454,6 @@ class DialogueManager:
                 turn.reply = f"I haven't seen your {obj} yet, so I'll go and look. {turn.reply}"
                 self.last_said = turn.reply
             return turn
-        words = [furniture_category(w) for w in place.split()]
-        word = next((w for w in words if w is not None), None)
         agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word)
         at = f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}"
         if agrees:
@@ -444,6 +465,25 @@ class DialogueManager:
             reply = f"Not when I last looked: {at}. Shall I go and check {place}?"
         return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj, source="memory",
                           memory=seen.to_dict(), agrees=agrees)
+
+    def _from_map(self, text: str, intent, obj: str, room: str | None, start: float) -> Turn | None:
+        """A yes-or-no place question answered from the simulator's map of the home (the oracle
+        search: nothing is remembered), as :meth:`_where` answers a where-question; None when
+        the map has no such thing or no room was asked about."""
+        from assistant.generation import oracle_sighting
+
+        sighting = oracle_sighting(self.world, self.scene, obj)
+        result = self._describe(obj, "static") if sighting is not None and room is not None else None
+        if result is None or not result.found:
+            return None
+        place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", result.description.rstrip("."), flags=re.I)
+        self.pending = {"kind": "confirm", "command": f"bring me the {obj} {place}", "object": obj}
+        agrees = sighting.room == room
+        said = result.description[:1].lower() + result.description[1:]
+        reply = (f"{'Yes' if agrees else 'No'} — {said} (That is from the simulator's map of the home: "
+                 f"I haven't seen {it_them(obj)} myself yet.) Shall I go and get {it_them(obj)}?")
+        return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj, source="simulator",
+                          agrees=agrees)
 
     def _last_object(self) -> str | None:
         """The thing the conversation was last about ("is *it* in the bedroom?")."""
@@ -681,14 +721,20 @@ class DialogueManager:
                 self.pending = None
                 self.synonyms[word.lower()] = choice
                 return self._command(p["text"], start, original=text)
-            if intent.name == "no":
+            if intent.name == "no" or re.search(r"\b(dont|do not) know\b|\bnot sure\b|\bno idea\b|\bneither\b|"
+                                                r"\bnone of (them|those)\b", norm):
                 self.pending = None
-                return self._turn(text, "no", f"OK — then I can't use '{word}'. Could you say it another way?",
-                                  "none", "not_understood", start)
+                return self._turn(text, "no", f"OK — then I can't use '{word}'. Could you say it another way, for "
+                                  "example with the room and a piece of furniture near it?", "none", "not_understood",
+                                  start)
             self.pending = None  # anything else is a new request
             return None
         if p["kind"] == "room":
             room = next((r for r in self.rooms if r in norm), None)
+            if room is not None and intent.name == "command" and len(norm.split()) > 3 \
+                    and self.services.parser(self.world).parse(text).plan.object is not None:
+                self.pending = None  # "look for my mug in the bedroom": a request of its own, not an answer
+                return None
             if room is None and p.get("object") and (intent.name == "yes" or re.search(ANYWHERE, norm)):
                 self.pending = None  # "I don't know", "anywhere", "search everywhere": the robot searches
                 return self._search(text, "command", p["object"], "static", start,

@@ -16,6 +16,11 @@ HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table 
 SOCIAL_REPLIES = {
     "greet": "Hello! What can I do for you?",
     "thanks": "You're welcome.",
+    "praise": "Thank you — I'm glad I could help.",
+    "wellbeing": "I'm fine, thank you — ready to help. What can I do for you?",
+    "listening": "Yes, I'm here and listening. What can I do for you?",
+    "emergency": "I can't call anyone or help you up myself. Please use your alarm button or your phone to call "
+                 "for help now — 999, 911 or 112, or someone close by. I'm staying here.",
     "rude": "I'm sorry I'm not being more helpful. Tell me what you need, for example \"bring me the mug "
             "from the bedroom\".",
     "smalltalk": "I'm the home robot: I find things, tell you where they are and fetch them. What can I do "

@@ -25,9 +25,9 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("find my phone in the bedroom", "command"), ("I'm looking for my mug, it is on the table by the bed", "command"),
     ("go to the table where the chairs are", "command"), ("the mug is where the chairs are", "command"),
     ("where are you?", "status"), ("what are you doing", "status"), ("are you done", "status"),
-    ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "smalltalk"),
+    ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "wellbeing"),
     ("what's your name", "smalltalk"), ("what time is it", "out_of_scope"), ("turn on the lights", "out_of_scope"),
-    ("good robot", "thanks"), ("perfect", "thanks"), ("turn left into the bedroom", "command"),
+    ("good robot", "praise"), ("perfect", "praise"), ("turn left into the bedroom", "command"),
     ("yes", "yes"), ("no thanks", "no"), ("hello", "greet"), ("thanks!", "thanks"),
     ("you stupid robot", "rude"), ("bye", "bye"), ("OK, goodbye!", "bye"), ("that's all for now", "bye"),
     ("quit", "bye"),
@@ -122,4 +122,17 @@ def test_yes_or_no_place_questions_and_where_things_should_go(text, intent, part
     ("keep going please", "resume"), ("carry the mug to me", "no_arm"), ("how do I get there?", "where_dynamic"),
 ])
 def test_stopping_and_carrying_on_said_the_way_people_say_it(text, intent):
+    assert classify(text).name == intent
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("help, I've fallen and I can't get up", "emergency"), ("call an ambulance", "emergency"),
+    ("I hurt myself", "emergency"), ("help me find my keys", "where"), ("help", "help"),
+    ("call my daughter please", "out_of_scope"), ("can you make me a cup of tea?", "out_of_scope"),
+    ("what can you help me with?", "help"), ("how are you today?", "wellbeing"), ("are you listening?", "listening"),
+    ("you're a clever little thing aren't you", "praise"), ("not right now, thanks", "no"),
+    ("no, leave it there", "no"), ("thanks", "thanks"), ("which room is it in?", "where"),
+    ("where exactly?", "where"), ("which table exactly", "where"),
+])
+def test_what_else_people_say_to_a_home_robot(text, intent):
     assert classify(text).name == intent

@@ -238,7 +238,7 @@ def test_the_robot_says_what_it_is_doing_and_answers_what_it_cannot_do(services,
     m.handle("stop")
     m.wait(5)
     for said, intent in (("come here", "come_here"), ("what time is it?", "out_of_scope"),
-                         ("how are you", "smalltalk"), ("good robot", "thanks")):
+                         ("how are you", "wellbeing"), ("good robot", "praise")):
         turn = m.handle(said)
         assert turn.intent == intent and "don't know the word" not in turn.reply, (said, turn.reply)
 
@@ -449,3 +449,53 @@ def test_not_that_table_after_a_fetch_that_chose_one(services, tmp_path):
     assert "hexagontable_1" not in [o["id"] for o in turn.data["options"]] and len(turn.data["options"]) == 2
     assert m.handle("the first one").action == "fetch"
     m.wait(10)
+
+
+def test_a_fall_stops_the_robot_and_says_how_to_get_help(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(hold=True))
+    m.handle("go to the bedroom")
+    turn = m.handle("help, I've fallen and I can't get up")
+    assert turn.intent == "emergency" and "call for help" in turn.reply and not m.busy
+    m.wait(5)
+
+
+def test_a_new_request_is_not_taken_for_the_room_asked_for(services, tmp_path):
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    assert m.handle("bring me my laptop").action == "clarify"
+    turn = m.handle("look for my mug in the bedroom")
+    assert turn.action == "fetch" and turn.data["object"] == "mug"
+    m.wait(10)
+    assert "laptop" not in fetcher.texts[-1] and "mug" in fetcher.texts[-1]
+
+
+def test_it_in_a_request_is_the_thing_talked_of(services, tmp_path):
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    turn = m.handle("can you bring it to me?")
+    assert turn.action == "fetch" and turn.data["object"] == "mug"
+    m.wait(10)
+    assert m.handle("which table exactly?").data["object"] == "mug"
+
+
+def test_i_dont_know_to_an_unknown_word_and_is_there_a_thing_in_a_room(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the mug from the wardrobe in the bedroom").action == "clarify"
+    assert m.handle("I don't know").reply.startswith("OK — then I can't use 'wardrobe'.")
+    turn = m.handle("is there a mug in the living room?")
+    assert turn.intent == "where_check" and turn.action == "fetch" and turn.reply.endswith("Going to the living room.")
+    m.wait(10)
+
+
+def test_is_it_there_from_the_simulators_map(tmp_path):
+    from assistant.world import load_world
+
+    services = Services(perception="oracle", search="oracle")
+    services.warm_up(load_world("apartment"), background=False)
+    m = make(services, tmp_path, StandInFetcher())
+    no = m.handle("is my laptop in the bedroom?")
+    assert no.reply.startswith("No — the laptop is in the living room") and "simulator's map" in no.reply
+    yes = m.handle("is the monitor near the bed?")  # only the bedroom has a bed
+    assert yes.reply.startswith("Yes — the monitor is in the bedroom")
