@@ -18,6 +18,29 @@ WANTED = (r"^(?:(?:um|uh|so|ok|okay|well|oh|robot|hey robot|please) )*(?:i need|
           r"(?:can|could|may) i (?:have|get)|i (?:really )?need|go (?:and )?(?:get|fetch)|give me|hand me|"
           r"pass me) (?P<thing>(?:my|the|our|his|her|a|an|some) [a-z]+(?: [a-z]+)?)(?: please| now| back| for me)*$")
 
+_PLACE_WORDS = r"(?:on|in|under|by|at|near|next to|beside|behind|inside|in front of|on top of)"
+#: a thing's place told, for the robot to remember (groups ``thing`` and ``place``)
+TOLD_PLACES = (
+    r"^(?:(?:ok|okay|so|and|robot|please) )*(?:please )?(?:can you |could you |will you )?(?:remember|note|make a note|"
+    r"keep in mind|dont forget|do not forget)(?: that)?(?: i (?:have |ve )?(?:put|left|placed))? (?P<thing>(?:my|the|our|his|"
+    r"her) [a-z]+(?: (?!is\b|are\b|now\b)[a-z]+)?) (?:(?:is|are) (?:now )?)?(?P<place>" + _PLACE_WORDS + r" [a-z ]+)$",
+    r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know) )*(?:i|ive|i have|weve|we have|we) (?:just )?"
+    r"(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: [a-z]+)?) (?P<place>" + _PLACE_WORDS
+    + r" [a-z ]+?)(?: for you| now| again| today)?$",
+)
+_TOLD = tuple(re.compile(p) for p in TOLD_PLACES)
+
+
+def told_place(norm: str) -> tuple[str, str] | None:
+    """(thing, place) of a place told to be remembered ("my keys", "on the coffee table in the
+    living room"), or None."""
+    for pattern in _TOLD:
+        m = pattern.search(norm)
+        if m:
+            return m.group("thing"), m.group("place")
+    return None
+
+
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
     # a person in danger: before anything else, whatever else the words say
@@ -77,6 +100,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"\bwhere (?:have you seen|did you see) (?:things|everything|stuff)\b")),
     # a thing asked for with no place: "I need my glasses", "can I have my keys" (a fetch)
     ("want", (WANTED,)),
+    # where a thing is, told to be remembered: "remember that my keys are on the coffee table",
+    # "I've put my glasses on the table by the bed"
+    ("told", TOLD_PLACES),
     ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
     # where a thing should go ("where should I put my keys?"): the person's choice, not a search
     ("put_advice", (r"\bwhere (?:should|shall|do|can|could|would|must|ought) (?:i|we) (?:to )?(?:put|leave|keep|store|"
@@ -231,7 +257,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise"})
+                          "praise", "told"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

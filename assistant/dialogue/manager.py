@@ -27,7 +27,7 @@ from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distin
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         unused_mentions)
 from assistant.dialogue.intents import (NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        teach_phrase, where_check_parts)
+                                        teach_phrase, told_place, where_check_parts)
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
@@ -35,6 +35,7 @@ from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them
+from assistant.generation import is_are
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.objects import article, is_object_word, plural, singular
@@ -205,6 +206,8 @@ class DialogueManager:
             return self._where(text, intent, start)
         if name == "where_check":
             return self._where_check(text, intent, start)
+        if name == "told":
+            return self._told(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -302,10 +305,13 @@ class DialogueManager:
 
     def _seen_list(self, text: str, start: float) -> Turn:
         """"what did you see?": the things the robot remembers in this home, latest first."""
-        seen = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
+        remembered = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
+        seen = [s for s in remembered if s.source != "told"]
+        told = [f"your {s.object}" for s in remembered if s.source == "told"]
+        told = _join(told) if told else ""
         if not seen:
             return self._turn(text, "seen_list", "I haven't seen any of your things here yet — ask me to look for "
-                              "something.", start=start)
+                              "something." + (f" You told me where to find {told}." if told else ""), start=start)
         parts, ages = [], []
         for s in seen[:SEEN_LIST_MAX]:
             parts.append(f"your {s.object}{_seen_place(s)}")
@@ -314,7 +320,8 @@ class DialogueManager:
             parts = [f"{p} ({age})" for p, age in zip(parts, ages)]
         when = f", {ages[0]}" if len(set(ages)) == 1 else ""
         more = f" — and {len(seen) - SEEN_LIST_MAX} more" if len(seen) > SEEN_LIST_MAX else ""
-        return self._turn(text, "seen_list", f"I've seen{when}: {_join(parts)}{more}.", start=start,
+        also = f" You also told me where to find {told}." if told else ""
+        return self._turn(text, "seen_list", f"I've seen{when}: {_join(parts)}{more}.{also}", start=start,
                           objects=[s.object for s in seen])
 
     def _furniture(self, text: str, intent, start: float) -> Turn:
@@ -374,7 +381,8 @@ class DialogueManager:
         style = "dynamic" if intent.name == "where_dynamic" else "static"
         seen = self.memory.recall(self.world.name, obj)
         if seen is not None and style == "static":
-            reply = f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}. Shall I go and check?"
+            said = self._seen_at(obj, seen)
+            reply = f"{said[:1].upper()}{said[1:]}. Shall I go and check?"
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
@@ -415,9 +423,8 @@ class DialogueManager:
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
         obj = self._last_object() if noun in ("it", "they", "them") else self._object_in(thing)[0]
         room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
-        word = next((w for w in map(furniture_category, place.split()) if w is not None), None)
+        word, homes = self._furniture_rooms(place)
         furniture = self.world.scene(self.scene).furniture
-        homes = sorted({f.room for f in furniture if f.word == word})
         if room is None and len(homes) == 1:  # "near the bed": the one room with a bed
             room = homes[0]
         missing = unknown_room_named(place.split(), self.world) if room is None else None
@@ -455,14 +462,15 @@ class DialogueManager:
                 self.last_said = turn.reply
             return turn
         agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word)
-        at = f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}"
+        at = self._seen_at(obj, seen)
         if agrees:
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
             reply = f"Yes — {at}. Shall I go and get {it_them(obj)}?"
         else:
             self.pending = {"kind": "confirm", "command": check, "object": obj}
-            reply = f"Not when I last looked: {at}. Shall I go and check {place}?"
+            reply = f"{'Not as far as I know' if seen.source == 'told' else 'Not when I last looked'}: {at}. " \
+                    f"Shall I go and check {place}?"
         return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj, source="memory",
                           memory=seen.to_dict(), agrees=agrees)
 
@@ -484,6 +492,48 @@ class DialogueManager:
                  f"I haven't seen {it_them(obj)} myself yet.) Shall I go and get {it_them(obj)}?")
         return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj, source="simulator",
                           agrees=agrees)
+
+    def _told(self, text: str, intent, start: float) -> Turn:
+        """"remember that my keys are on the coffee table in the living room", "I've put my
+        glasses on the table by the bed": kept in the memory as told (no drive to check); the
+        room is the one named, or the only one with the furniture named."""
+        thing, place = told_place(intent.text)
+        noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
+        obj = self._object_in(thing)[0]
+        if obj is None:
+            return self._turn(text, intent.name, f"I don't know what {article(noun)} {noun} is, so I can't keep track of "
+                              "it.", "answer", "not_understood", start, unknown=noun)
+        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
+        missing = unknown_room_named(place.split(), self.world) if room is None else None
+        if missing is not None:
+            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
+                              unknown_room=missing)
+        word, homes = self._furniture_rooms(place)
+        if room is None and len(homes) == 1:
+            room = homes[0]
+        phrase = re.sub(rf"\s*\b(in|inside) (the|my|our) {re.escape(room)}$", "", place).strip() if room else place
+        if phrase in ("", "in the", "in") or re.fullmatch(r"(in|inside) (the|my|our) [a-z ]+", phrase):
+            phrase = None  # only the room was said
+        seen = self.memory.remember(self.world.name, obj, room, None, word, phrase, source="told")
+        where = " ".join(p for p in (phrase, f"in the {room}" if room else "") if p)
+        return self._turn(text, intent.name, f"OK — I'll remember that your {obj} {is_are(obj)} {where}.", "answer",
+                          "answered", start, object=obj, source="told", memory=seen.to_dict())
+
+    def _furniture_rooms(self, place: str) -> tuple[str | None, list[str]]:
+        """The first furniture word of a place ("on the table next to the bed" → "table") and
+        the rooms that have every piece of furniture it names (only the bedroom has a bed)."""
+        words = list(dict.fromkeys(w for w in map(furniture_category, place.split()) if w is not None))
+        furniture = self.world.scene(self.scene).furniture
+        homes = [r for r in self.rooms if all(any(f.room == r and f.word == w for f in furniture) for w in words)]
+        return (words[0] if words else None), (homes if words else [])
+
+    def _seen_at(self, obj: str, seen) -> str:
+        """Where a remembered thing is, said with where the memory came from: "I saw your mug 3
+        minutes ago on the table …" or "you told me an hour ago that your keys are on …"."""
+        if seen.source == "told":
+            return f"you told me {self.memory.age(seen)} that your {obj} {is_are(obj)}{_seen_place(seen)}"
+        return f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}"
 
     def _last_object(self) -> str | None:
         """The thing the conversation was last about ("is *it* in the bedroom?")."""

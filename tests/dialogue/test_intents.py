@@ -1,6 +1,6 @@
 import pytest
 
-from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase, where_check_parts
+from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase, told_place, where_check_parts
 
 
 @pytest.mark.parametrize("text,intent", [
@@ -136,3 +136,15 @@ def test_stopping_and_carrying_on_said_the_way_people_say_it(text, intent):
 ])
 def test_what_else_people_say_to_a_home_robot(text, intent):
     assert classify(text).name == intent
+
+
+@pytest.mark.parametrize("text,parts", [
+    ("please remember that my keys are on the coffee table in the living room",
+     ("my keys", "on the coffee table in the living room")),
+    ("remember my wallet is in the bedroom", ("my wallet", "in the bedroom")),
+    ("I've put my glasses case on the table next to the bed", ("my glasses case", "on the table next to the bed")),
+    ("do you remember where my keys are", None), ("my glasses are on the table", None),
+])
+def test_a_place_told_to_be_remembered(text, parts):
+    found = classify(text)
+    assert (found.name == "told") == (parts is not None) and told_place(found.text) == parts

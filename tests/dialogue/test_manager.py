@@ -371,7 +371,7 @@ def test_place_questions_answered_without_moving(services, tmp_path, said, reply
 def test_the_furniture_a_place_is_told_by_picks_the_room(services, tmp_path):
     # tables are in the living room and the bedroom; the bed only in the bedroom
     m = make(services, tmp_path, StandInFetcher())
-    turn = m.handle("I put my glasses on the table next to the bed")
+    turn = m.handle("my glasses are on the table next to the bed")
     assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
     m.wait(10)
 
@@ -499,3 +499,22 @@ def test_is_it_there_from_the_simulators_map(tmp_path):
     assert no.reply.startswith("No — the laptop is in the living room") and "simulator's map" in no.reply
     yes = m.handle("is the monitor near the bed?")  # only the bedroom has a bed
     assert yes.reply.startswith("Yes — the monitor is in the bedroom")
+
+
+def test_a_place_told_is_remembered_as_told_and_said_so(services, tmp_path):
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    told = m.handle("please remember that my keys are on the coffee table in the living room")
+    assert told.action == "answer" and not fetcher.texts  # kept, not driven to
+    assert told.reply == "OK — I'll remember that your keys are on the coffee table in the living room."
+    entry = m.memory.recall("apartment", "keys")
+    assert (entry.source, entry.room, entry.phrase) == ("told", "living room", "on the coffee table")
+    assert ObjectMemory(tmp_path / "memory.json").recall("apartment", "keys") is not None  # saved
+    where = m.handle("where are my keys?")
+    assert where.reply.startswith("You told me just now that your keys are on the coffee table in the living room.")
+    check = m.handle("are my keys in the bedroom?")
+    assert check.reply.startswith("Not as far as I know: you told me")
+    bed = m.handle("I've put my glasses on the table next to the bed")  # only the bedroom has a bed
+    assert bed.reply.endswith("on the table next to the bed in the bedroom.")
+    listed = m.handle("what did you see?")
+    assert listed.reply.startswith("I haven't seen any of your things") and "your glasses and your keys" in listed.reply
