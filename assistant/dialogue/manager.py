@@ -54,6 +54,11 @@ CORRECTION = (r"^(?:(?:no|nope|nah|not that one|not that|not this one|wrong one|
 #: a request about the thing just talked of, said with "it" ("can you bring it to me?", "take me to it")
 IT_REQUEST = (r"\b(bring|get|fetch|find|show) (me )?(it|them)\b|\b(take|lead|guide) me to (it|them)\b|"
               r"\b(go|drive) (to|and (get|find|check|look at)) (it|them)\b")
+#: where the thing just talked of is, said with "it" ("it's on the table by the chairs", "no, they are in
+#: the bedroom")
+IT_IS_AT = (r"^(?:(?:no|sorry|oh|actually|well|i think|wrong room|wrong place)\b ?)*(?:its|it is|it should be|theyre|"
+            r"they are|they should be) (?:probably |maybe |still |now )?(?P<place>(?:on|in|under|by|at|near|next to|"
+            r"beside|behind|inside|in front of) [a-z ]+)$")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
 
@@ -217,9 +222,14 @@ class DialogueManager:
         other = self._other_one(text, intent.text, start)
         if other is not None:
             return other
-        last = self._last_object() if re.search(r"\b(it|them)\b", intent.text) else None
+        last = self._last_object() if re.search(r"\b(it|them|its|theyre)\b", intent.text) else None
         if last is not None and re.search(IT_REQUEST, intent.text):  # "bring it to me", "take me to it"
             return self._command(re.sub(r"\b(it|them)\b", f"the {last}", intent.text, count=1), start, original=text)
+        if last is not None and (m := re.search(IT_IS_AT, intent.text)):  # "it's on the table by the chairs"
+            return self._command(f"the {last} {is_are(last)} {m.group('place')}", start, original=text)
+        room_fix = self._other_room(text, intent.text, start)
+        if room_fix is not None:
+            return room_fix
         bare = re.sub(r"^(the|my|a|an|your|our) ", "", intent.text)
         if bare and len(bare.split()) <= 2 and (self._object_in(bare)[0] == bare
                                                 or matching(self.world.scene(self.scene).furniture, bare)):
@@ -872,6 +882,29 @@ class DialogueManager:
         self.pending = {**remaining, "kind": "which", "asked": f"Which {word} do you mean: {_join(said, 'or')}?"}
         self.last_choice = None
         return self._turn(text, "command", reply, "clarify", "asked", start, options=others)
+
+    def _other_room(self, text: str, norm: str, start: float) -> Turn | None:
+        """"sorry, I meant the bedroom", "wrong room — the bedroom": the last fetch or search
+        again, for the thing it was about, in the room now named; None when the words are not
+        such a correction or no thing was talked of."""
+        m = re.match(r"^(?:(?:no|sorry|oh|actually|i meant|i mean|i said|wrong room|not that room|not there)\b ?)+"
+                     r"(?:(?:try|check|look in|go to|its in|it is in|theyre in|they are in|in) )?(?:the |my )?"
+                     r"(?P<room>[a-z ]+?)(?: then| please| instead)*$", norm)
+        if m is None or not re.match(r"^(no|sorry|oh|actually|i meant|i mean|i said|wrong room|not that room|not there)\b",
+                                     norm):
+            return None
+        room = next((r for r in self.rooms if m.group("room") == r), None)
+        missing = unknown_room_named(m.group("room").split(), self.world) if room is None else None
+        obj = self._last_object()
+        if missing is not None:
+            return self._turn(text, "command", f"There is no {missing} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
+                              unknown_room=missing)
+        if room is None or obj is None:
+            return None
+        if self.busy:
+            self.worker.stop(quiet=True)
+        return self._command(f"find the {obj} in the {room}", start, original=text)
 
     def _last_visited(self) -> dict | None:
         """The piece of furniture the last fetch went to, as a which-question among the pieces of

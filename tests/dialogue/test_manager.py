@@ -518,3 +518,18 @@ def test_a_place_told_is_remembered_as_told_and_said_so(services, tmp_path):
     assert bed.reply.endswith("on the table next to the bed in the bedroom.")
     listed = m.handle("what did you see?")
     assert listed.reply.startswith("I haven't seen any of your things") and "your glasses and your keys" in listed.reply
+
+
+def test_sorry_i_meant_another_room_and_its_over_there(services, tmp_path):
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    m.handle("find my statue in the living room")
+    m.wait(10)
+    again = m.handle("sorry, I meant the bedroom")
+    assert again.action == "fetch" and again.data["object"] == "statue" and again.reply == "Going to the bedroom."
+    m.wait(10)
+    assert "statue" in fetcher.texts[-1] and "bedroom" in fetcher.texts[-1]
+    assert m.handle("no, the kitchen").reply.startswith("There is no kitchen here")
+    there = m.handle("it's on the table by the chair")
+    assert there.action == "fetch" and there.data["object"] == "statue"
+    m.wait(10)
