@@ -41,6 +41,13 @@ def told_place(norm: str) -> tuple[str, str] | None:
     return None
 
 
+#: a question about what lies on a piece of furniture (groups ``furniture`` and ``room``)
+ON_FURNITURE = (r"^(?:(?:and|so|ok|okay|then|um) )*(?:what|whats|what else|what else is|anything|is there anything|"
+                r"is anything|are there any things|what things are|what have you seen|what did you see|have you seen anything)"
+                r"(?: else)?(?: is| are| lying| left)? (?:on|on top of) (?:the|my|that|this) (?P<furniture>[a-z]+(?: [a-z]+)?)"
+                r"(?: (?:in|inside) the (?P<room>[a-z ]+))?(?: now| at the moment)?$")
+
+
 #: intent name → patterns (searched in the normalised utterance), in priority order
 RULES: list[tuple[str, tuple[str, ...]]] = [
     # a person in danger: before anything else, whatever else the words say
@@ -103,6 +110,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     # where a thing is, told to be remembered: "remember that my keys are on the coffee table",
     # "I've put my glasses on the table by the bed"
     ("told", TOLD_PLACES),
+    # what lies on a piece of furniture: "what else is on the table?", "is there anything on the bed?"
+    ("on_furniture", (ON_FURNITURE,)),
     ("furniture", None),  # FURNITURE_QUESTIONS, below (dialogue.inventory reads them)
     # where a thing should go ("where should I put my keys?"): the person's choice, not a search
     ("put_advice", (r"\bwhere (?:should|shall|do|can|could|would|must|ought) (?:i|we) (?:to )?(?:put|leave|keep|store|"
@@ -257,7 +266,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise", "told"})
+                          "praise", "told", "on_furniture"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -26,7 +26,7 @@ import time
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         unused_mentions)
-from assistant.dialogue.intents import (NEW_REQUESTS, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
+from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
                                         teach_phrase, told_place, where_check_parts)
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
@@ -213,6 +213,8 @@ class DialogueManager:
             return self._where_check(text, intent, start)
         if name == "told":
             return self._told(text, intent, start)
+        if name == "on_furniture":
+            return self._on_furniture(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -537,6 +539,30 @@ class DialogueManager:
         furniture = self.world.scene(self.scene).furniture
         homes = [r for r in self.rooms if all(any(f.room == r and f.word == w for f in furniture) for w in words)]
         return (words[0] if words else None), (homes if words else [])
+
+    def _on_furniture(self, text: str, intent, start: float) -> Turn:
+        """"what else is on the table?", "is there anything on the bed?": the things the memory
+        has on that kind of furniture (in the room named), each with where and when."""
+        m = re.search(ON_FURNITURE, intent.text)
+        said, named = m.group("furniture"), m.group("room")
+        word = furniture_category(said) or furniture_category(singular(said.split()[-1]))
+        room = next((r for r in self.rooms if named and named.strip() == r), None)
+        if named and room is None:
+            return self._turn(text, intent.name, f"There is no {named} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start)
+        if word is None:
+            return self._turn(text, intent.name, f"I don't know what the {said} is — I know tables, chairs, couches "
+                              "and beds.", "answer", "not_understood", start, unknown=said)
+        entries = sorted((s for s in self.memory.sightings(self.world.name)
+                          if s.furniture_word == word and (room is None or s.room == room)), key=lambda s: -s.time_s)
+        where = f" in the {room}" if room else ""
+        if not entries:
+            return self._turn(text, intent.name, f"I don't know of anything on the {said}{where}: I only know what "
+                              f"I've seen or been told. Ask me, for example, \"is my mug on the {said}?\"", start=start)
+        parts = [f"your {s.object}{_seen_place(s)} ({'you told me' if s.source == 'told' else 'seen'} "
+                 f"{self.memory.age(s)})" for s in entries[:SEEN_LIST_MAX]]
+        return self._turn(text, intent.name, f"On the {plural(word) if len(entries) > 1 else word}{where} I know of "
+                          f"{_join(parts)}.", start=start, objects=[s.object for s in entries])
 
     def _seen_at(self, obj: str, seen) -> str:
         """Where a remembered thing is, said with where the memory came from: "I saw your mug 3

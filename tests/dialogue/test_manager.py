@@ -533,3 +533,16 @@ def test_sorry_i_meant_another_room_and_its_over_there(services, tmp_path):
     there = m.handle("it's on the table by the chair")
     assert there.action == "fetch" and there.data["object"] == "statue"
     m.wait(10)
+
+
+def test_what_is_on_a_piece_of_furniture_from_memory(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("is there anything on the bed?").reply.startswith("I don't know of anything on the bed")
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    m.handle("remember that my keys are on the coffee table in the living room")
+    both = m.handle("what else is on the table?")
+    assert both.intent == "on_furniture" and both.data["objects"] == ["keys", "mug"]
+    assert "your keys on the coffee table in the living room (you told me just now)" in both.reply
+    bedroom = m.handle("whats on the table in the bedroom")
+    assert bedroom.data["objects"] == ["mug"]
