@@ -879,8 +879,12 @@ class DialogueManager:
         m = re.match(CORRECTION, norm)
         if m is None:
             return None
-        last = self.last_choice or self._last_visited()
         rest = norm[m.end():].strip()
+        lead = norm[:m.end()]
+        if not re.search(r"\b(no|nope|nah|not|wrong|sorry|meant|mean|actually|said)\b", lead) \
+                and not re.search(r"\bother\b", rest):
+            return None  # "go to the table …", "check the bedroom": a request, not a correction
+        last = self.last_choice or self._last_visited()
         word = (last or {}).get("word") or "table"
         if rest not in ("", "other", "the other", "other one", "the other one", word, f"the other {word}") \
                 and not rest.startswith(("the one", "that one", "one ", f"the {word}", "the other one ")):

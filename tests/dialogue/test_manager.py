@@ -546,3 +546,12 @@ def test_what_is_on_a_piece_of_furniture_from_memory(services, tmp_path):
     assert "your keys on the coffee table in the living room (you told me just now)" in both.reply
     bedroom = m.handle("whats on the table in the bedroom")
     assert bedroom.data["objects"] == ["mug"]
+
+
+@pytest.mark.parametrize("said", ["go to the table to the right of the bed in the bedroom",
+                                  "check the table to the left of the bed in the bedroom"])
+def test_a_request_that_starts_like_a_correction_is_a_request(services, tmp_path, said):
+    m = make(services, tmp_path, StandInFetcher())
+    turn = m.handle(said)
+    assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
+    m.wait(10)
