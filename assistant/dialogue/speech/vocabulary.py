@@ -93,6 +93,15 @@ ROBOT_TEMPLATES = (
     "where is the {f}", "where is the {r}", "i need my {o}", "can i have my {o}", "give me my {o}",
     "what did you see", "what do you remember", "i don't know", "anywhere", "search everywhere",
     "put the {o} on the {f}", "pick up the {o}", "open the door", "can you carry the {o}",
+    # yes-or-no place questions, places told, corrections, carrying on, a fall (3 Dec)
+    "is my {o} in the {r}", "is the {o} on the {f}", "did i leave my {o} in the {r}", "is it in the {r}",
+    "could my {o} be in the {r}", "where should i put my {o}", "remember that my {o} is on the {f} in the {r}",
+    "i put my {o} on the {f} next to the bed", "what else is on the {f}", "is there anything on the {f}",
+    "no the other one", "not that {f}", "wrong one", "try the other {f}", "sorry i meant the {r}",
+    "it's on the {f} by the chair", "where did you see it", "which room is it in", "where exactly",
+    "can you bring it to me", "take me to it", "how do i get there", "hang on stop please", "carry on",
+    "ok you can carry on now", "no no come back", "help i've fallen and i can't get up", "call my daughter",
+    "how are you today", "are you listening", "good robot", "not right now thanks",
 )
 #: how many times each of :data:`ROBOT_TEMPLATES`' sentences is in the model text
 ROBOT_WEIGHT = 8
