@@ -21,3 +21,15 @@ def test_objects_on_furniture_get_room_and_support(apartment):
 def test_without_perceived_furniture_only_the_room_is_known(apartment):
     (placed,) = place_sightings(apartment, [], [_seen("mug", -1.2, -5.0)])
     assert placed.room == "bedroom" and placed.furniture_id is None and placed.furniture_category is None
+
+
+def test_a_thing_between_a_chair_and_its_table_is_on_the_table(apartment):
+    # the bedroom's wood chair stands pushed to the hexagon table: a mug seen 0.1 m from the
+    # chair's footprint and 0.2 m from the table's is on the table
+    grid = world_grid(apartment)
+    furniture = furniture_entities(apartment, "original", grid)
+    (placed,) = place_sightings(apartment, furniture, [_seen("mug", -1.2, -4.4)])
+    assert placed.furniture_id == "hexagontable_1"
+    (alone,) = place_sightings(apartment, [f for f in furniture if f.id != "hexagontable_1"],
+                               [_seen("mug", -1.2, -4.4)])
+    assert alone.furniture_id == "woodchair_1"  # with no table perceived, the chair it is
