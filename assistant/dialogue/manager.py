@@ -34,8 +34,8 @@ from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
 from assistant.dialogue.turns import join_words as _join
-from assistant.dialogue.replies import it_them
-from assistant.generation import is_are
+from assistant.dialogue.replies import it_them, related_seen
+from assistant.generation import is_are, some
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.objects import article, is_object_word, plural, singular
@@ -406,6 +406,16 @@ class DialogueManager:
                 return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj,
                                   source="memory", style=style, nodes=list(result.nodes), found=True,
                                   memory=seen.to_dict())
+        related = related_seen(obj, [s.object for s in self.memory.sightings(self.world.name)]) \
+            if seen is None else None
+        if related is not None:  # "where are my glasses?", a glasses case remembered
+            other = self.memory.recall(self.world.name, related)
+            said = self._seen_at(related, other)
+            self.pending = {"kind": "confirm", "command": fetch_command_text(related, other.phrase, other.room),
+                            "object": related}
+            return self._turn(text, intent.name, f"I haven't seen {some(obj)}, but {said}. Is that what you mean? "
+                              f"Shall I go and get {it_them(related)}?", "answer", "answered", start, object=obj,
+                              related=related, source="memory")
         if self.services.search_mode == "sensed":
             return self._search(text, intent.name, obj, style, start)
         result = self._describe(obj, style)

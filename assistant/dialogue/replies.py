@@ -44,9 +44,26 @@ def search_reply(ctx: ReplyContext, name: str, result, summary: dict, start: flo
         reply = f"I searched {where} but ran out of time before I found your {name}."
     else:
         reply = description
+    related = related_seen(name, summary["seen"])
+    entry = ctx.memory.recall(ctx.world.name, related) if related else None
+    if entry is not None:  # "glasses" asked, a glasses case seen: say so
+        place = " ".join(p for p in (entry.phrase, f"in the {entry.room}" if entry.room else "") if p)
+        reply += f" I did see your {related}{' ' + place if place else ''} — is that what you mean?"
+        data["related"] = related
     if ctx.memory.recall(ctx.world.name, name) is not None and name not in summary["seen"]:
         ctx.memory.forget(ctx.world.name, name)
     return Turn(name, "where", reply, "search", "failed", data, time.perf_counter() - start)
+
+
+def related_seen(name: str, seen) -> str | None:
+    """A thing among ``seen`` whose name holds the one asked for, or is held in it ("glasses"
+    asked, "glasses case" seen; "phone" and "cell phone"), or None."""
+    words = name.split()
+    for other in seen:
+        mine = other.split()
+        if other != name and (set(words) <= set(mine) or set(mine) <= set(words)):
+            return other
+    return None
 
 
 def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: float, summary: dict | None = None,

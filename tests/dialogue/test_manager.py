@@ -555,3 +555,16 @@ def test_a_request_that_starts_like_a_correction_is_a_request(services, tmp_path
     turn = m.handle(said)
     assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
     m.wait(10)
+
+
+def test_glasses_asked_and_a_glasses_case_remembered(services, tmp_path):
+    from assistant.dialogue.replies import related_seen
+
+    assert related_seen("glasses", ["mug", "glasses case"]) == "glasses case"
+    assert related_seen("cell phone", ["phone"]) == "phone" and related_seen("mug", ["mugs box", "fork"]) is None
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("remember that my glasses case is on the coffee table in the living room")
+    turn = m.handle("where are my glasses?")
+    assert turn.reply.startswith("I haven't seen any glasses, but you told me just now that your glasses case")
+    assert m.pending["object"] == "glasses case" and m.handle("yes").action == "fetch"
+    m.wait(10)
