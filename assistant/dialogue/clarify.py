@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from assistant.app import known_object_names
 from assistant.dialogue.intents import ordinal_choice
 from assistant.grounding.objects import article, object_phrase, plural
+from assistant.grounding.vocabulary import furniture_category
 
 #: furniture words the robot can be told an unknown word stands for
 FURNITURE_CHOICES = ("table", "chair", "couch", "bed")
@@ -50,6 +51,21 @@ def choose_option(norm: str, options: list[dict], parse) -> int | None:
     if best > 0 and scores.count(best) == 1:
         return scores.index(best)
     return None
+
+
+def options_named(norm: str, options: list[dict], parse) -> list[int]:
+    """The options whose phrase names a reference of the answer's grounded plan, or else a
+    furniture word of the answer ("the one near the sofa" → the options by the couch), in
+    order; [] when none."""
+    phrases = [o["phrase"].lower() for o in options]
+    said = [w for w in map(furniture_category, norm.split()) if w is not None]
+    for ref in [*(str(n).split("-")[0] for n in parse().nodes), *said]:
+        if ref in ("room", "move", "robot"):
+            continue
+        hits = [k for k, ph in enumerate(phrases) if re.search(rf"\b{ref}s?\b", ph)]
+        if hits:
+            return hits
+    return []
 
 
 def progress_sentence(name: str, data: dict, words: dict) -> str | None:

@@ -25,7 +25,7 @@ import time
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
-                                        unused_mentions)
+                                        options_named, unused_mentions)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
                                         teach_phrase, told_place, where_check_parts)
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
@@ -855,6 +855,14 @@ class DialogueManager:
             if index is not None:
                 self.pending = None
                 return self._fetch_option(text, p, index, start)
+            named = options_named(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)
+            if 1 < len(named) < len(p["options"]):  # "the one near the sofa": two are; which of them
+                word = p.get("word") or "table"
+                options = [p["options"][k] for k in named]
+                said = [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in options]
+                asked = f"Which of those — {_join(said, 'or')}?"
+                self.pending = {**p, "options": options, "asked": asked}
+                return self._turn(text, "answer", asked, "clarify", "asked", start, options=options)
             pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
             if intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text)):
                 self.pending = None

@@ -568,3 +568,14 @@ def test_glasses_asked_and_a_glasses_case_remembered(services, tmp_path):
     assert turn.reply.startswith("I haven't seen any glasses, but you told me just now that your glasses case")
     assert m.pending["object"] == "glasses case" and m.handle("yes").action == "fetch"
     m.wait(10)
+
+
+def test_an_answer_that_fits_two_options_narrows_the_question(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the laptop from the table in the living room").reply.startswith("There are three")
+    narrowed = m.handle("the one near the sofa")  # two tables are by the couch
+    assert narrowed.action == "clarify" and narrowed.reply.startswith("Which of those — the one behind the couch")
+    assert len(narrowed.data["options"]) == 2
+    chosen = m.handle("the one in the middle")
+    assert chosen.action == "fetch" and chosen.data["chosen"] == narrowed.data["options"][1]["id"]
+    m.wait(10)
