@@ -128,6 +128,9 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             pending = {"kind": "confirm", "search": obj, "object": obj}
             here += f" Shall I look for {it_them(obj)}?"
         return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start), pending
+    if item is not None and item.room and not _names_furniture(text):  # "go to the living room": the room
+        return Turn(text, "command", f"Done — I'm in the {item.room}.", "fetch", "success", data,
+                    time.perf_counter() - start), pending
     if item is not None:
         where = re.sub(r"^(on|at|by) ", "", phrase or f"the {item.word}") + f" in the {item.room}"
     elif details.get("arrived"):  # a room with nothing to face ("go to the hallway")
@@ -135,6 +138,13 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
                     time.perf_counter() - start), pending
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                 time.perf_counter() - start), pending
+
+
+def _names_furniture(command: str) -> bool:
+    """Whether a command names a piece of furniture (else the robot chose what to face)."""
+    from assistant.grounding.vocabulary import furniture_category
+
+    return any(furniture_category(w) is not None for w in re.findall(r"[a-z]+", command.lower()))
 
 
 def place_text(place: dict) -> str | None:

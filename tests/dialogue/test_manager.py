@@ -579,3 +579,17 @@ def test_an_answer_that_fits_two_options_narrows_the_question(services, tmp_path
     chosen = m.handle("the one in the middle")
     assert chosen.action == "fetch" and chosen.data["chosen"] == narrowed.data["options"][1]["id"]
     m.wait(10)
+
+
+@pytest.mark.parametrize("command, reply", [
+    ("go to the living room", "Done — I'm in the living room."),
+    ("go to the table in front of the couch in the living room", "I'm there, facing the table"),
+])
+def test_a_room_said_alone_ends_in_the_room_not_at_a_table(services, tmp_path, command, reply):
+    from assistant.dialogue.replies import ReplyContext, fetch_reply
+    from assistant.world import load_world
+
+    world = load_world("apartment")
+    ctx = ReplyContext(world, "original", ObjectMemory(tmp_path / "memory.json"), services)
+    turn, _ = fetch_reply(ctx, command, fetch_result(True, "coffeetable_1", obj=None), None, time.perf_counter())
+    assert turn.outcome == "success" and turn.reply.startswith(reply)
