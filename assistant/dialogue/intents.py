@@ -24,9 +24,10 @@ TOLD_PLACES = (
     r"^(?:(?:ok|okay|so|and|robot|please) )*(?:please )?(?:can you |could you |will you )?(?:remember|note|make a note|"
     r"keep in mind|dont forget|do not forget)(?: that)?(?: i (?:have |ve )?(?:put|left|placed))? (?P<thing>(?:my|the|our|his|"
     r"her) [a-z]+(?: (?!is\b|are\b|now\b)[a-z]+)?) (?:(?:is|are) (?:now )?)?(?P<place>" + _PLACE_WORDS + r" [a-z ]+)$",
-    r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know) )*(?:i|ive|i have|weve|we have|we) (?:just )?"
-    r"(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: [a-z]+)?) (?P<place>" + _PLACE_WORDS
-    + r" [a-z ]+?)(?: for you| now| again| today)?$",
+    r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|actually|no|sorry) )*(?:i|ive|i have|weve|we have|we) "
+    r"(?:just )?(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!(?:next|on|in|under|by|"
+    r"at|near|beside|behind|inside|to|onto|into|back)\b)[a-z]+)?|it|them) "
+    r"(?:back )?(?P<place>(?:" + _PLACE_WORDS + r"|to|onto|into) [a-z ]+?)(?: for you| now| again| today)?$",
 )
 _TOLD = tuple(re.compile(p) for p in TOLD_PLACES)
 
@@ -60,7 +61,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"(stop|halt|freeze|wait|hold on|hang on|stay)( (it|now|there|right now|please|moving|that|robot|"
               r"a (second|sec|moment|minute)|a sec|for a (second|moment|minute)))*$",
               r"^(stop|halt) (it|now|please)\b")),
-    ("cancel", (r"^(please )?(cancel|never ?mind|forget (it|that|about it)|abort|no never ?mind)\b",
+    ("cancel", (r"^(?:(?:actually|ok|okay|oh|no|sorry|well|um|uh|so|ah) )*(please )?(cancel|never ?mind|forget (it|that|"
+                r"about it)|abort|no never ?mind)\b",
                 r"^(no )?(it doesnt|it does not) matter\b")),
     # a request not to do something: never carried out as the request itself
     ("dont", (r"^(please |no |no no )?(dont|do not|never|better not)( you)? (go|bring|fetch|get|come|drive|move|turn|"
@@ -83,7 +85,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"come back|come to me|come over here|over here|follow me|come and find me|come back here)"
                    r"( please| robot| now| here| to me)*$",)),
     # go on with the task stopped last ("ok, carry on", "you can continue now")
-    ("resume", (r"^(?:(?:ok|okay|alright|right|yes|yeah|sorry|fine|oh) )*(?:you can |please |ok you can )?(?:carry on|"
+    ("resume", (r"^(?:(?:ok|okay|alright|right|yes|yeah|sorry|fine|oh|actually|well|no) )*(?:you can |please |ok you can )?(?:carry on|"
                 r"continue|keep going|go on|resume|proceed|go ahead and finish|finish (?:it|that|what you were doing)|"
                 r"get going again|off you go)(?: please| now| then| with (?:it|that|what you were doing)| robot)*$",)),
     ("wellbeing", (r"^" + ADDRESS + r"(how are you|how are you doing|how are things|hows it going with you|"
@@ -143,7 +145,11 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"\bhelp me (find|look for)\b", r"^(you|anyone|anybody|has anyone|has anybody) seen\b",
                # about the thing just talked of: "which room is it in?", "where exactly?", "which table exactly?"
                r"^(?:(?:and|so|ok|okay|but) )*which (room|table|one|place|chair|bit of the room) (is|are) (it|they|that|"
-               r"those) (in|on|at)$", r"^(?:(?:and|so|ok|okay|but) )*(where|which (room|table|one|place)) "
+               r"those) (in|on|at)$",
+               r"^(?:(?:and|so|ok|okay|but) )*(which|what) (room|table|place) (is|are) (my|the|our|his|her) [a-z]+"
+               r"(?: [a-z]+)? (in|on|at)$",
+               r"^(?:and|what about|how about|and what about) (my|the|our|his|her) [a-z]+(?: [a-z]+)?$",
+               r"^(?:(?:and|so|ok|okay|but) )*which (table|room|one)$", r"^(?:(?:and|so|ok|okay|but) )*(where|which (room|table|one|place)) "
                r"(exactly|precisely|then)$")),
     ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
              r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),

@@ -520,8 +520,12 @@ class DialogueManager:
         glasses on the table by the bed": kept in the memory as told (no drive to check); the
         room is the one named, or the only one with the furniture named."""
         thing, place = told_place(intent.text)
+        place = re.sub(r"^into ", "in ", re.sub(r"^(to|onto) ", "on ", place))  # "I moved it to the coffee table"
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
-        obj = self._object_in(thing)[0]
+        obj = self._last_object() if noun in ("it", "them") else self._object_in(thing)[0]
+        if obj is None and noun in ("it", "them"):
+            return self._turn(text, intent.name, "Which of your things do you mean? Say, for example, \"I've put my "
+                              "keys on the table in the hallway\".", "clarify", "asked", start)
         if obj is None:
             return self._turn(text, intent.name, f"I don't know what {article(noun)} {noun} is, so I can't keep track of "
                               "it.", "answer", "not_understood", start, unknown=noun)
@@ -654,17 +658,26 @@ class DialogueManager:
         # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
         nouns += [r for n in plan.nodes for r, _ in n.pairs if r not in FURNITURE_WORDS.values()
                   and r not in STRUCTURE_REFERENCES and not is_object_word(r) and r not in nouns]
+        room_words = {w for r in self.rooms for w in r.split()}
         if plan.room is None:  # the parser missed a room the words name ("go to the bedroom")
             named = [r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text.lower())]
             if len(named) == 1:
-                retry = f"go into the {named[0]}" if not (plan.nodes or plan.object) else f"{text} in the {named[0]}"
+                thing = plan.object if plan.object not in room_words else None  # "inner" of "the inner hall"
+                retry = f"go into the {named[0]}" if not (plan.nodes or thing) else f"{text} in the {named[0]}"
                 again = self.services.parser(self.world).parse(retry).plan
                 if again.room == named[0]:
                     text, plan = retry, again
+        if plan.room is not None and plan.room not in self.rooms:  # a room another home has ("the bedroom")
+            return self._turn(said, "command", f"There is no {plan.room} here; the rooms are "
+                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "not_understood", start,
+                              unknown_room=plan.room)
+        nouns = [n for n in nouns if n.lower() not in room_words]  # "inner" of "the inner hall" is no unknown noun
         mentions = furniture_mentions(parsed.analysis.tokens, parsed.analysis.pos, self.world, self.scene)
         # the object named in the words when the plan lost it ("get the mug from the table")
         obj = plan.object or (self._object_in(" ".join(str(t).lower() for t in parsed.analysis.tokens))[0]
                               if plan.nodes or plan.room or mentions else None)
+        if obj is not None and set(obj.split()) <= room_words:  # "the inner hall" names a room, not a thing
+            obj = None
         missing = unknown_room_named([str(t).lower() for t in parsed.analysis.tokens], self.world) \
             if plan.room is None else None
         if missing is not None:  # "go to the kitchen" in a home with none

@@ -148,3 +148,12 @@ def test_what_else_people_say_to_a_home_robot(text, intent):
 def test_a_place_told_to_be_remembered(text, parts):
     found = classify(text)
     assert (found.name == "told") == (parts is not None) and told_place(found.text) == parts
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("actually never mind", "cancel"), ("ok forget it", "cancel"), ("actually, carry on", "resume"),
+    ("which room is my monitor in?", "where"), ("what room is the fork in?", "where"), ("and my keys?", "where"),
+    ("which table?", "where"), ("I moved it to the coffee table", "told"),
+])
+def test_more_of_what_people_say_in_other_homes(text, intent):
+    assert classify(text).name == intent

@@ -593,3 +593,28 @@ def test_a_room_said_alone_ends_in_the_room_not_at_a_table(services, tmp_path, c
     ctx = ReplyContext(world, "original", ObjectMemory(tmp_path / "memory.json"), services)
     turn, _ = fetch_reply(ctx, command, fetch_result(True, "coffeetable_1", obj=None), None, time.perf_counter())
     assert turn.outcome == "success" and turn.reply.startswith(reply)
+
+
+def test_a_thing_moved_and_rooms_of_other_homes(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("remember that my book is on the table in the bedroom")
+    moved = m.handle("I moved it to the coffee table")
+    assert moved.reply == "OK — I'll remember that your book is on the coffee table."
+    assert m.handle("and my book?").reply.startswith("You told me just now that your book is on the coffee table")
+
+
+def test_a_room_of_two_words_and_a_room_this_home_lacks(tmp_path):
+    from assistant.world import load_world
+
+    services = Services(perception="oracle")
+    services.warm_up(load_world("two-bedrooms-house"), background=False)
+    m = DialogueManager("two-bedrooms-house", services=services.using(fetcher=StandInFetcher()),
+                        memory=ObjectMemory(tmp_path / "memory.json"))
+    turn = m.handle("go to the inner hall")  # "inner" is no unknown word, nor a thing to look for
+    assert turn.action == "fetch" and turn.reply == "Going to the inner hall." and turn.data.get("object") is None
+    m.wait(10)
+    assert "There is no" not in m.handle("bring me the mug from the small room").reply
+    m.wait(10)
+    studio = Services(perception="oracle").using(fetcher=StandInFetcher())
+    h = DialogueManager("hk-studio", services=studio, memory=ObjectMemory(tmp_path / "hk.json"))
+    assert h.handle("bring me the laptop from the bedroom").reply.startswith("There is no bedroom here; the rooms are")
