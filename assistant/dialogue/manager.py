@@ -722,7 +722,9 @@ class DialogueManager:
             # "go to the couch": the rooms that have one (a kind word said narrows them: "coffee table")
             node = plan.nodes[-1]
             items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]
-            kinds = [f for f in items if any(d in f.model.split() for d in node.descriptors)]
+            said = [*node.descriptors, node.support] if node.support and node.support != node.target \
+                else list(node.descriptors)  # "the desk": a table whose model is a desk
+            kinds = [f for f in items if any(d in f.model.split() for d in said)]
             homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
             # the furniture it is told by ("the table next to the bed"): only a room with that too
             furniture = self.world.scene(self.scene).furniture
@@ -774,16 +776,23 @@ class DialogueManager:
         items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
         if room is None or not items:
             return None
-        chosen = model_choice(mentions, items) if len(items) > 1 else (items[0] if dropped else None)
+        named = {str(getattr(m, "said", "")).lower() for m in mentions}
+        models = [f for f in items if named & set(f.model.split())]  # "the desk": only the desks
+        shown = word
+        if 0 < len(models) < len(items):
+            items = models
+            shown = next((w for w in models[0].model.split() if w in named), word)
+        chosen = model_choice(mentions, items) if len(items) > 1 else (items[0] if dropped or models else None)
         if chosen is not None:
             phrase = furniture_phrase(self.services.describer, self.world, self.scene, chosen)
             turn = self._start_fetch(said, fetch_command_text(obj, phrase, chosen.room), chosen.room, obj, start)
             turn.data["chosen"] = chosen.id
             return turn
-        return self._ask_which(said, text, word, room, obj, start)
+        return self._ask_which(said, text, word, room, obj, start, items, shown)
 
-    def _ask_which(self, said, text, word, room, obj, start) -> Turn | None:
-        items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
+    def _ask_which(self, said, text, word, room, obj, start, items=None, shown=None) -> Turn | None:
+        items = items or [f for f in self.world.scene(self.scene).furniture
+                          if f.word == word and (room is None or f.room == room)]
         if len(items) < 2 or room is None:
             return None
         describer = self.services.describer
@@ -797,7 +806,7 @@ class DialogueManager:
             for o, phrase in zip(options, said_options):
                 o["phrase"] = phrase.replace("the one ", f"the {word} ", 1)
         count = NUMBER_WORDS.get(len(items), str(len(items)))
-        reply = f"There are {count} {word}s in the {room} — {_join(said_options, 'or')}?"
+        reply = f"There are {count} {shown or word}s in the {room} — {_join(said_options, 'or')}?"
         self.pending = {"kind": "which", "word": word, "room": room, "object": obj, "options": options,
                         "text": text, "original": said, "asked": reply}
         return self._turn(said, "command", reply, "clarify", "asked", start, options=options)

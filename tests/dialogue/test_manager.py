@@ -618,3 +618,17 @@ def test_a_room_of_two_words_and_a_room_this_home_lacks(tmp_path):
     studio = Services(perception="oracle").using(fetcher=StandInFetcher())
     h = DialogueManager("hk-studio", services=studio, memory=ObjectMemory(tmp_path / "hk.json"))
     assert h.handle("bring me the laptop from the bedroom").reply.startswith("There is no bedroom here; the rooms are")
+
+
+def test_the_desk_is_a_desk_not_any_table(tmp_path):
+    from assistant.world import load_world
+
+    for world, said, reply in (("two-bedrooms-house", "bring me the monitor from the desk", "Going to the office."),
+                               ("hk-studio", "can you grab my fork off the desk in the studio",
+                                "There are two desks in the studio — ")):
+        services = Services(perception="oracle")
+        services.warm_up(load_world(world), background=False)
+        m = DialogueManager(world, services=services.using(fetcher=StandInFetcher()),
+                            memory=ObjectMemory(tmp_path / f"{world}.json"))
+        assert m.handle(said).reply.startswith(reply)
+        m.wait(10)
