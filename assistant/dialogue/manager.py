@@ -479,7 +479,7 @@ class DialogueManager:
         if seen is None:  # nothing remembered: go and look there
             turn = self._command(check, start, original=text)
             turn.intent = intent.name
-            if turn.action in ("fetch", "search"):
+            if turn.action in ("fetch", "search") and not self._redirected:  # (a search redirected says so)
                 turn.reply = f"I haven't seen your {obj} yet, so I'll go and look. {turn.reply}"
                 self.last_said = turn.reply
             return turn
@@ -587,7 +587,11 @@ class DialogueManager:
 
     def _last_object(self) -> str | None:
         """The thing the conversation was last about ("is *it* in the bedroom?")."""
-        return next((t.data["object"] for t in reversed(self.history) if t.data.get("object")), None)
+        for t in reversed(self.history):  # a turn about a thing, or a question asked about one's plan
+            found = t.data.get("object") or (t.data.get("plan") or {}).get("object")
+            if found:
+                return found
+        return None
 
     def _search(self, said: str, intent_name: str, obj: str, style: str, start: float,
                 lead: str | None = None) -> Turn:
@@ -809,7 +813,7 @@ class DialogueManager:
         reply = f"There are {count} {shown or word}s in the {room} — {_join(said_options, 'or')}?"
         self.pending = {"kind": "which", "word": word, "room": room, "object": obj, "options": options,
                         "text": text, "original": said, "asked": reply}
-        return self._turn(said, "command", reply, "clarify", "asked", start, options=options)
+        return self._turn(said, "command", reply, "clarify", "asked", start, options=options, object=obj)
 
     # ------------------------------------------------------------------ answers in context
     def _resolve(self, text: str, intent, start: float) -> Turn | None:

@@ -632,3 +632,11 @@ def test_the_desk_is_a_desk_not_any_table(tmp_path):
                             memory=ObjectMemory(tmp_path / f"{world}.json"))
         assert m.handle(said).reply.startswith(reply)
         m.wait(10)
+
+
+def test_it_after_a_which_question_is_the_thing_asked_for(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("bring me the mug from the table in the bedroom")  # "There are three tables …?"
+    turn = m.handle("is it in the living room?")
+    assert turn.intent == "where_check" and turn.data["object"] == "mug"
+    m.wait(10)
