@@ -701,6 +701,14 @@ class DialogueManager:
         if not force and (nouns or strange):
             # a word the robot cannot tie to anything in this home: name it back and ask
             first = strange[0] if strange and (not nouns or strange[0].category is not None) else None
+            furniture = self.world.scene(self.scene).furniture
+            if first is not None and first.category is not None and singular(first.said) == first.category \
+                    and not any(f.word == first.category for f in furniture):
+                # "get the statue from the bed" in a home with no bed: say so, not "is it a bed?"
+                counts = {k: sum(f.word == k for f in furniture) for k in sorted({f.word for f in furniture})}
+                kinds = _join([plural(k) if n > 1 else f"{article(k)} {k}" for k, n in counts.items()])
+                return self._turn(said, "command", f"There is no {first.category} in this home — the furniture "
+                                  f"here is {kinds}.", "answer", "not_understood", start, unknown=[first.said])
             word = first.said if first is not None else nouns[0]
             suggest = first.category if first is not None else None
             self.pending = {"kind": "word", "word": word, "text": text, "original": said, "suggest": suggest}

@@ -640,3 +640,12 @@ def test_it_after_a_which_question_is_the_thing_asked_for(services, tmp_path):
     turn = m.handle("is it in the living room?")
     assert turn.intent == "where_check" and turn.data["object"] == "mug"
     m.wait(10)
+
+
+def test_furniture_the_home_lacks_is_said_to_be_missing(tmp_path):
+    services = Services(perception="oracle").using(fetcher=StandInFetcher())
+    m = DialogueManager("hk-studio", services=services, memory=ObjectMemory(tmp_path / "memory.json"))
+    turn = m.handle("get the statue from the bed")
+    assert turn.reply.startswith("There is no bed in this home — the furniture here is") and turn.action != "fetch"
+    assert m.handle("bring me the mug from the dresser in the studio").reply.startswith(
+        "I don't know which of the furniture here is the dresser")  # a word for some other piece: asked
