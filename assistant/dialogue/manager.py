@@ -63,6 +63,11 @@ IT_IS_AT = (r"^(?:(?:no|sorry|oh|actually|well|i think|wrong room|wrong place)\b
 SEEN_LIST_MAX = 4
 
 
+def _pointed(word: str, options: list[dict]) -> list[str]:
+    """Which-question options said as "the one …" ("on the table by the bed" → "the one by the bed")."""
+    return [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in options]
+
+
 def _seen_place(seen) -> str:
     """Where a remembered sighting was, said after the thing: " on the table by the chair in the bedroom"."""
     place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
@@ -288,7 +293,7 @@ class DialogueManager:
 
     def _place_asked(self, text: str, intent, noun: str, start: float) -> Turn | None:
         """A where-question about a room or a piece of furniture: where it is, and an offer to go."""
-        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+        room = self._room_in(intent.text)
         if room is not None:
             self.pending = {"kind": "confirm", "command": f"go to the {room}", "object": None}
             rooms = _join(["the " + r for r in self.rooms])
@@ -297,9 +302,7 @@ class DialogueManager:
         missing = unknown_room_named(intent.text.split(), self.world) or (
             noun if noun in COMMON_ROOMS or f"{noun} room" in COMMON_ROOMS else None)
         if missing is not None:
-            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
-                              unknown_room=missing)
+            return self._no_room(text, intent.name, missing, start)
         furniture = self.world.scene(self.scene).furniture
         found = matching(furniture, noun)
         if not found:
@@ -315,12 +318,32 @@ class DialogueManager:
                           f"go to, for example \"go to the {found[0].model} in the {found[0].room}\".",
                           "answer", "answered", start)
 
+    def _room_in(self, text: str) -> str | None:
+        """The first of this home's rooms named in ``text`` (as whole words), or None."""
+        return next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text)), None)
+
+    def _no_room(self, said: str, intent_name: str, missing: str, start: float, outcome: str = "answered") -> Turn:
+        """"There is no kitchen here; the rooms are …": a room this home does not have."""
+        return self._turn(said, intent_name, f"There is no {missing} here; the rooms are "
+                          f"{_join(['the ' + r for r in self.rooms])}.", "answer", outcome, start,
+                          unknown_room=missing)
+
+    def _rooms_with(self, words) -> list[str]:
+        """The rooms that have a piece of furniture of each of ``words`` ("bed": only the bedroom)."""
+        furniture = self.world.scene(self.scene).furniture
+        return [r for r in self.rooms if all(any(f.room == r and f.word == w for f in furniture) for w in words)]
+
+    def _option(self, item) -> dict:
+        """A piece of furniture as an option of a which-question (its phrase from the describer)."""
+        return {"id": item.id, "phrase": furniture_phrase(self.services.describer, self.world, self.scene, item),
+                "room": item.room, "model": item.model}
+
     def _seen_list(self, text: str, start: float) -> Turn:
         """"what did you see?": the things the robot remembers in this home, latest first."""
         remembered = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
         seen = [s for s in remembered if s.source != "told"]
-        told = [f"your {s.object}" for s in remembered if s.source == "told"]
-        told = _join(told) if told else ""
+        told_things = [f"your {s.object}" for s in remembered if s.source == "told"]
+        told = _join(told_things) if told_things else ""
         if not seen:
             return self._turn(text, "seen_list", "I haven't seen any of your things here yet — ask me to look for "
                               "something." + (f" You told me where to find {told}." if told else ""), start=start)
@@ -345,17 +368,15 @@ class DialogueManager:
                 and furniture_category(singular(what)) is None:
             thing = self._object_in(intent.text)[0]
             if thing is not None:  # "is there a mug in the bedroom?": is it there / where is it
-                room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+                room = self._room_in(intent.text)
                 if room is not None:
                     return self._where_check(text, Intent("where_check", f"is the {thing} in the {room}"), start)
                 return self._where(text, Intent("where", intent.text), start)
             return self._command(text, start)
-        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", intent.text)), None)
+        room = self._room_in(intent.text)
         missing = unknown_room_named(intent.text.split(), self.world) if room is None else None
         if missing is not None:
-            rooms = _join(["the " + r for r in self.rooms])
-            return self._turn(text, "furniture", f"There is no {missing} here; the rooms are {rooms}.", "answer",
-                              "answered", start, unknown_room=missing)
+            return self._no_room(text, "furniture", missing, start)
         reply = furniture_answer(furniture, self.rooms, kind, what, room)
         return self._turn(text, "furniture", reply, "answer", "answered", start, room=room, asked=what or None)
 
@@ -444,16 +465,14 @@ class DialogueManager:
         thing, place = where_check_parts(intent.text)
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
         obj = self._last_object() if noun in ("it", "they", "them") else self._object_in(thing)[0]
-        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
+        room = self._room_in(place)
         word, homes = self._furniture_rooms(place)
         furniture = self.world.scene(self.scene).furniture
         if room is None and len(homes) == 1:  # "near the bed": the one room with a bed
             room = homes[0]
         missing = unknown_room_named(place.split(), self.world) if room is None else None
         if missing is not None:
-            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
-                              unknown_room=missing)
+            return self._no_room(text, intent.name, missing, start)
         if obj is None:
             found = matching(furniture, noun)
             if found and room is not None:  # "is the couch in the living room?"
@@ -529,12 +548,10 @@ class DialogueManager:
         if obj is None:
             return self._turn(text, intent.name, f"I don't know what {article(noun)} {noun} is, so I can't keep track of "
                               "it.", "answer", "not_understood", start, unknown=noun)
-        room = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", place)), None)
+        room = self._room_in(place)
         missing = unknown_room_named(place.split(), self.world) if room is None else None
         if missing is not None:
-            return self._turn(text, intent.name, f"There is no {missing} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
-                              unknown_room=missing)
+            return self._no_room(text, intent.name, missing, start)
         word, homes = self._furniture_rooms(place)
         if room is None and len(homes) == 1:
             room = homes[0]
@@ -550,9 +567,7 @@ class DialogueManager:
         """The first furniture word of a place ("on the table next to the bed" → "table") and
         the rooms that have every piece of furniture it names (only the bedroom has a bed)."""
         words = list(dict.fromkeys(w for w in map(furniture_category, place.split()) if w is not None))
-        furniture = self.world.scene(self.scene).furniture
-        homes = [r for r in self.rooms if all(any(f.room == r and f.word == w for f in furniture) for w in words)]
-        return (words[0] if words else None), (homes if words else [])
+        return (words[0] if words else None), (self._rooms_with(words) if words else [])
 
     def _on_furniture(self, text: str, intent, start: float) -> Turn:
         """"what else is on the table?", "is there anything on the bed?": the things the memory
@@ -562,8 +577,7 @@ class DialogueManager:
         word = furniture_category(said) or furniture_category(singular(said.split()[-1]))
         room = next((r for r in self.rooms if named and named.strip() == r), None)
         if named and room is None:
-            return self._turn(text, intent.name, f"There is no {named} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start)
+            return self._no_room(text, intent.name, named, start)
         if word is None:
             return self._turn(text, intent.name, f"I don't know what the {said} is — I know tables, chairs, couches "
                               "and beds.", "answer", "not_understood", start, unknown=said)
@@ -672,9 +686,7 @@ class DialogueManager:
                 if again.room == named[0]:
                     text, plan = retry, again
         if plan.room is not None and plan.room not in self.rooms:  # a room another home has ("the bedroom")
-            return self._turn(said, "command", f"There is no {plan.room} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "not_understood", start,
-                              unknown_room=plan.room)
+            return self._no_room(said, "command", plan.room, start, "not_understood")
         nouns = [n for n in nouns if n.lower() not in room_words]  # "inner" of "the inner hall" is no unknown noun
         mentions = furniture_mentions(parsed.analysis.tokens, parsed.analysis.pos, self.world, self.scene)
         # the object named in the words when the plan lost it ("get the mug from the table")
@@ -685,9 +697,7 @@ class DialogueManager:
         missing = unknown_room_named([str(t).lower() for t in parsed.analysis.tokens], self.world) \
             if plan.room is None else None
         if missing is not None:  # "go to the kitchen" in a home with none
-            rooms = _join(["the " + r for r in self.rooms])
-            return self._turn(said, "command", f"There is no {missing} here; the rooms are {rooms}.", "answer",
-                              "not_understood", start, unknown_room=missing)
+            return self._no_room(said, "command", missing, start, "not_understood")
         has_plan = bool(plan.nodes or plan.room or plan.object or (mentions and obj))
         if not has_plan:
             if unused:
@@ -739,10 +749,9 @@ class DialogueManager:
             kinds = [f for f in items if any(d in f.model.split() for d in said)]
             homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
             # the furniture it is told by ("the table next to the bed"): only a room with that too
-            furniture = self.world.scene(self.scene).furniture
             landmarks = {ref for n in plan.nodes for ref, _ in n.pairs if ref in FURNITURE_WORDS.values()}
-            told = [r for r in homes if all(any(f.room == r and f.word == w for f in furniture) for w in landmarks)]
-            homes = told or homes
+            with_landmarks = self._rooms_with(landmarks)
+            homes = [r for r in homes if r in with_landmarks] or homes
             if len(homes) == 1:
                 room, text = homes[0], f"{text} in the {homes[0]}"
             elif homes and not force:
@@ -807,11 +816,7 @@ class DialogueManager:
                           if f.word == word and (room is None or f.room == room)]
         if len(items) < 2 or room is None:
             return None
-        describer = self.services.describer
-        options = []
-        for item in items:
-            phrase = furniture_phrase(describer, self.world, self.scene, item)
-            options.append({"id": item.id, "phrase": phrase, "room": item.room, "model": item.model})
+        options = [self._option(item) for item in items]
         said_options = [("the one " + re.sub(rf"^on the {word} ", "", o["phrase"])) for o in options]
         if len(set(said_options)) < len(said_options) or any(o["phrase"] == f"on the {word}" for o in options):
             said_options = distinct_phrases(self.world, self.scene, items)
@@ -893,8 +898,7 @@ class DialogueManager:
             if 1 < len(named) < len(p["options"]):  # "the one near the sofa": two are; which of them
                 word = p.get("word") or "table"
                 options = [p["options"][k] for k in named]
-                said = [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in options]
-                asked = f"Which of those — {_join(said, 'or')}?"
+                asked = f"Which of those — {_join(_pointed(word, options), 'or')}?"
                 self.pending = {**p, "options": options, "asked": asked}
                 return self._turn(text, "answer", asked, "clarify", "asked", start, options=options)
             pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
@@ -959,9 +963,9 @@ class DialogueManager:
         if index is not None:
             phrase = re.sub(r"^(?:on|at|by|in) ", "", others[index]["phrase"])
             return self._fetch_option(text, remaining, index, start, lead=f"Sorry — {phrase}, then.")
-        said = [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in others]
-        reply = f"Sorry — which {word}, then: {_join(said, 'or')}?"
-        self.pending = {**remaining, "kind": "which", "asked": f"Which {word} do you mean: {_join(said, 'or')}?"}
+        said = _join(_pointed(word, others), "or")
+        reply = f"Sorry — which {word}, then: {said}?"
+        self.pending = {**remaining, "kind": "which", "asked": f"Which {word} do you mean: {said}?"}
         self.last_choice = None
         return self._turn(text, "command", reply, "clarify", "asked", start, options=others)
 
@@ -979,9 +983,7 @@ class DialogueManager:
         missing = unknown_room_named(m.group("room").split(), self.world) if room is None else None
         obj = self._last_object()
         if missing is not None:
-            return self._turn(text, "command", f"There is no {missing} here; the rooms are "
-                              f"{_join(['the ' + r for r in self.rooms])}.", "answer", "answered", start,
-                              unknown_room=missing)
+            return self._no_room(text, "command", missing, start)
         if room is None or obj is None:
             return None
         if self.busy:
@@ -1005,9 +1007,7 @@ class DialogueManager:
         items = [f for f in furniture if f.word == item.word and f.room == item.room]
         if len(items) < 2:
             return None
-        describer = self.services.describer
-        options = [{"id": f.id, "phrase": furniture_phrase(describer, self.world, self.scene, f), "room": f.room,
-                    "model": f.model} for f in items]
+        options = [self._option(f) for f in items]
         return {"word": item.word, "room": item.room, "object": turn.data.get("object") or self._last_object(),
                 "options": options,
                 "all": options, "tried": [item.id], "text": turn.data.get("command", ""), "original": turn.text}

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from assistant.app import Status
 from assistant.dialogue.services import furniture_phrase
 from assistant.dialogue.turns import Turn, join_words
+from assistant.grounding.vocabulary import furniture_category
 
 __all__ = ["ReplyContext", "SeenFurniture", "fetch_reply", "near", "place_text", "search_reply"]
 
@@ -142,8 +143,6 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
 
 def _names_furniture(command: str) -> bool:
     """Whether a command names a piece of furniture (else the robot chose what to face)."""
-    from assistant.grounding.vocabulary import furniture_category
-
     return any(furniture_category(w) is not None for w in re.findall(r"[a-z]+", command.lower()))
 
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
+from assistant.grounding.objects import plural, singular
 from assistant.grounding.types import ChunkGrounding, ChunkRecord
 from assistant.grounding.vocabulary import FURNITURE_WORDS, canonical_tokens
 
@@ -53,6 +54,4 @@ NOT_THINGS = frozenset({"robot", "room", "wall", "door", "doorway", "corner", "e
 
 def _names(words: set[str], reference: str) -> bool:
     """Whether the chunk's words name the thing ``reference`` (each of its words, singular or plural)."""
-    from assistant.grounding.objects import plural, singular
-
     return all(w in words or singular(w) in words or plural(w) in words for w in reference.split())
