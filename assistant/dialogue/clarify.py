@@ -282,7 +282,9 @@ def fetch_command_text(obj: str | None, phrase: str | None, room: str | None) ->
     the bedroom")."""
     place = re.sub(r"^(on|at|by) ", "", phrase or "").strip()
     parts = [f"bring me the {obj}" if obj else "go"]
-    if place:
+    if place and obj and (phrase or "").startswith("on "):  # "on the bed": what it lies on
+        parts.append(f"on {place}")
+    elif place:
         parts.append(f"from {place}" if obj else f"to {place}")
     if room:
         parts.append(f"in the {room}")

@@ -46,11 +46,11 @@ from assistant.executor.entry import enter_room
 from assistant.executor.outcome import ExecutionResult, ExecutionStatus
 from assistant.executor.reports import FetchResult, NodeReport
 from assistant.executor.rooms import room_of
-from assistant.executor.sensing import entity_centre, environment_items
+from assistant.executor.sensing import entity_centre, entity_room, environment_items
 from assistant.executor.spoken import nearest_first, room_from_here, run_moves, spoken_node
 from assistant.grounding.motion import is_motion_plan
 from assistant.executor.survey import Surveyor
-from assistant.executor.viewing import in_view, viewing_poses
+from assistant.executor.viewing import in_view, point_viewing_spot, viewing_poses
 from assistant.geometry import Pose2D, point_in_polygon, wrap_angle
 from assistant.grounding.vocabulary import NO_TARGET
 from assistant.policy.model import NotFittedError
@@ -101,6 +101,7 @@ class FetchTask:
     reference_range_m: float = 3.0
     max_looks_for_reference: int = 2
     max_other_surfaces: int = 3  # surfaces looked at when the object is not seen on the target
+    spot_clearance_m: float = 0.4  # free space around the spot to look at an object seen from afar
 
     # ------------------------------------------------------------------ set-up
     def _setup(self, ctx: TaskContext) -> None:
@@ -290,11 +291,15 @@ class FetchTask:
             return None
         before = self.ctx.seen.get(name)
         self._observe_here()
-        if self.ctx.seen.get(name) is not before or before is not None and before.furniture_id == target.id:
-            return None
+        now = self.ctx.seen.get(name)
+        if (now is not before or before is not None and before.furniture_id == target.id) and (
+                now.furniture_id in (None, target.id) or not self._seen_on(name, room, target)):
+            return None  # seen from here on the target (or on nothing the robot has mapped)
         pose = self.ctx.pose()
         others = [e for e in self.chooser.likely_surfaces(room, wanted, pose, self._said) if e.id != target.id]
-        for other in nearest_first(others, pose)[:self.max_other_surfaces]:
+        if (found := self._look_where_seen(name, room, target)) is not None:
+            return found
+        for other in self._seen_on(name, room, target) + nearest_first(others, pose)[:self.max_other_surfaces]:
             before = self.ctx.seen.get(name)
             if not self._face(other).success:
                 continue
@@ -303,6 +308,38 @@ class FetchTask:
                 return other
         self._face(target)
         return None
+
+    def _look_where_seen(self, name: str, room: str, target: Entity) -> Entity | None:
+        """When the object was seen in ``room`` (on the way, or in an earlier task) on no
+        furniture the robot has mapped — seen from afar, the surface under it not yet
+        perceived — go and look at that spot (:func:`~assistant.executor.viewing.point_viewing_spot`).
+        Seen again there: the furniture it is seen on, or ``target`` when it lies on nothing
+        found (the robot stays facing it); else None."""
+        seen = self.ctx.seen.get(name)
+        if seen is None or seen.furniture_id is not None or room_of(self.ctx.world, (seen.x_m, seen.y_m)) != room:
+            return None
+        spot = point_viewing_spot(self.ctx.obstacles.occupancy(), self.ctx.pose(), (seen.x_m, seen.y_m),
+                                  self.spot_clearance_m)
+        if spot is None or not self.ctx.go_to(spot, math.atan2(seen.y_m - spot[1], seen.x_m - spot[0])).success:
+            return None
+        self.ctx.face_point(seen.x_m, seen.y_m)
+        self._observe_here()
+        now = self.ctx.seen.get(name)
+        if now is seen or now.furniture_id == target.id:
+            return None
+        # seen again from here: on the furniture found under it, or (none found) the robot stays
+        # facing it with the plan's target as the furniture it reports
+        return next((e for e in self.ctx.perception.furniture() if e.id == now.furniture_id), target)
+
+    def _seen_on(self, name: str, room: str, target: Entity) -> list[Entity]:
+        """The perceived furniture in ``room`` the object was last seen on, on the way here,
+        when that is not ``target``: looked at first, before the other likely surfaces (any
+        kind of furniture — it was seen there — not only the plan's)."""
+        seen = self.ctx.seen.get(name)
+        if seen is None or seen.furniture_id in (None, target.id):
+            return []
+        return [e for e in self.ctx.perception.furniture()
+                if e.id == seen.furniture_id and entity_room(self.ctx.world, e) == room]
 
     # ------------------------------------------------------------------ nodes
     def _run_node(self, node, room: str):

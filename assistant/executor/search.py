@@ -59,6 +59,7 @@ from assistant.executor.entry import enter_room
 from assistant.executor.outcome import ExecutionStatus
 from assistant.executor.rooms import RoomGraph, room_of
 from assistant.executor.sightings import place_sightings
+from assistant.executor.viewing import point_viewing_spot
 from assistant.geometry import point_in_polygon, polygon_lattice
 from assistant.perception.objects import Sighting
 
@@ -371,22 +372,11 @@ class SearchTask:
         placed = place_sightings(self.ctx.world, self.ctx.perception.furniture(), [hit])[0]
         if hit.distance_m <= self.confirm_distance_m and placed.furniture_id is not None:
             return
-        occ = self.ctx.obstacles.occupancy()
-        angles = np.linspace(0, 2 * math.pi, 16, endpoint=False)
-        here = self.ctx.pose()
-        best = None
-        for r in (1.3, 1.6, 1.9):
-            for a in angles:
-                x, y = hit.x_m + r * math.cos(a), hit.y_m + r * math.sin(a)
-                pt = np.array([[x, y]])
-                if occ.clearance_at(pt)[0] < self.clearance_m or not occ.reachable_from(here, pt)[0]:
-                    continue
-                cost = math.hypot(x - here.x, y - here.y) + abs(r - 1.5)
-                if best is None or cost < best[0]:
-                    best = (cost, x, y)
-        if best is None:
+        spot = point_viewing_spot(self.ctx.obstacles.occupancy(), self.ctx.pose(), (hit.x_m, hit.y_m),
+                                  self.clearance_m)
+        if spot is None:
             return
-        _, x, y = best
+        x, y = spot
         room = self.ctx.world.floorplan.room_at(x, y)
         moved = self.ctx.go_to((x, y), math.atan2(hit.y_m - y, hit.x_m - x))
         if moved.success:

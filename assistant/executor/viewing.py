@@ -21,7 +21,7 @@ from assistant.geometry import Pose2D
 from assistant.world import Entity, World
 from assistant.world.entity import as_item
 
-__all__ = ["HALF_FOV_RAD", "clear_sight", "in_view", "viewing_poses"]
+__all__ = ["HALF_FOV_RAD", "clear_sight", "in_view", "point_viewing_spot", "viewing_poses"]
 
 #: half the Kinect's horizontal field of view (57°), radians
 HALF_FOV_RAD = math.radians(28.5)
@@ -101,3 +101,24 @@ def viewing_poses(world: World, target: Entity, pose: Pose2D, occupancy: Occupan
             break
     out.sort(key=lambda c: c[0])
     return [g for _, g in out]
+
+
+def point_viewing_spot(occupancy: OccupancyMap, pose: Pose2D, xy: tuple[float, float],
+                       clearance_m: float, radii_m: Sequence[float] = (1.3, 1.6, 1.9)
+                       ) -> tuple[float, float] | None:
+    """A free spot (metres) ``radii_m`` from the point ``xy`` (a thing seen from afar), with
+    ``clearance_m`` of room and reachable from ``pose``: the cheapest by the way there plus how
+    far its distance is from 1.5 m (near enough for the object detector, far enough to see the
+    surface it lies on); None when there is none."""
+    here = pose
+    best = None
+    for r in radii_m:
+        for a in np.linspace(0, 2 * math.pi, 16, endpoint=False):
+            x, y = xy[0] + r * math.cos(a), xy[1] + r * math.sin(a)
+            pt = np.array([[x, y]])
+            if occupancy.clearance_at(pt)[0] < clearance_m or not occupancy.reachable_from(here, pt)[0]:
+                continue
+            cost = math.hypot(x - here.x, y - here.y) + abs(r - 1.5)
+            if best is None or cost < best[0]:
+                best = (cost, x, y)
+    return None if best is None else (best[1], best[2])

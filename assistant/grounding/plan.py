@@ -129,6 +129,17 @@ def said_furniture(words: Sequence[str], pos: Sequence[str]) -> str | None:
     return found[-1] if found else None
 
 
+def _support_target(target: str, support: str | None) -> str:
+    """The node's target for a thing said to lie on ``support``: the grounders give ``table``
+    for every place a thing lies (the study's objects lay on table-like furniture), but in a
+    home keys are left on the bed and a phone on the couch — a support word of another category
+    the robot recognises ("on the bed", "on the sofa", "on the chair") is the target itself."""
+    category = FURNITURE_WORDS.get(support or "")
+    if target == "table" and category is not None and category != "table":
+        return category
+    return target
+
+
 def assemble_plan(tree, groundings: Sequence[ChunkGrounding]) -> GroundingPlan:
     """Build the plan of a chunk tree whose chunks (in pre-order) have ``groundings``."""
     chunks = tree.chunks()
@@ -218,10 +229,11 @@ class _PlanWalk:
 
     def _target_chunk(self, item, g: ChunkGrounding) -> None:
         own = [t.text for t in item.own_tokens]
-        node = _NodeBuilder(g.target, support=said_furniture(own, [t.pos for t in item.own_tokens]) or g.target,
-                            descriptors=said_descriptors(own))
-        if g.reference:
-            node.pairs.append(self.pair_of(g))
+        support = said_furniture(own, [t.pos for t in item.own_tokens]) or g.target
+        target = _support_target(g.target, support)
+        node = _NodeBuilder(target, support=support, descriptors=said_descriptors(own))
+        if g.reference and self.pair_of(g)[0] != target:  # "grab the remote from the sofa": no
+            node.pairs.append(self.pair_of(g))           # couch in front of the couch
         node.pairs.extend(p for p in side_of_room(item.own_tokens) if p not in node.pairs)
         self.visit(item.items, node, id(item))
         # move steps nested in the target chunk were appended first; the node follows

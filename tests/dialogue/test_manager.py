@@ -520,6 +520,19 @@ def test_a_place_told_is_remembered_as_told_and_said_so(services, tmp_path):
     assert listed.reply.startswith("I haven't seen any of your things") and "your glasses and your keys" in listed.reply
 
 
+def test_a_thing_told_to_be_on_the_bed_is_fetched_from_the_bed(services, tmp_path):
+    """A told place on a bed is fetched from the bed, not from a table (the fetch command made
+    from the memory says "on the bed", which grounds to the bed itself)."""
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    m.handle("remember that my keys are on the bed")
+    m.handle("bring me my keys")
+    m.wait(10)
+    assert fetcher.texts[-1] == "bring me the keys on the bed in the bedroom"
+    plan = services.parser(m.world).parse(fetcher.texts[-1]).plan
+    assert plan.node_strings == ["room-center-bed"] and plan.room == "bedroom"
+
+
 def test_sorry_i_meant_another_room_and_its_over_there(services, tmp_path):
     fetcher = StandInFetcher()
     m = make(services, tmp_path, fetcher)

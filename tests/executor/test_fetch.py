@@ -268,3 +268,63 @@ def test_an_object_the_detector_sees_is_the_landmark_of_the_node(apartment, poli
     # without an object detector the keys are never seen: the node finds no reference
     blind, _ = _run(apartment, plan, policies, scene="lived-in")
     assert blind.nodes[0].reference is None and blind.nodes[0].status == "reference_not_found"
+
+
+
+class _FoundNear(OracleFurniture):
+    """Oracle furniture in which the items ``ids`` are found only once the robot has stood
+    within ``near_m`` of them (perception that missed them from afar)."""
+
+    def __init__(self, world, scene, ids, near_m=1.5):
+        super().__init__(world, scene)
+        self.hidden = {e.id: e for e in self._items if e.id in set(ids)}
+        self._items = [e for e in self._items if e.id not in self.hidden]
+        self.near_m = near_m
+
+    def observe(self, frame, pose):
+        super().observe(frame, pose)
+        import math
+
+        from assistant.executor.sensing import entity_centre
+
+        for key, item in list(self.hidden.items()):
+            x, y = entity_centre(item)
+            if math.hypot(x - pose.x, y - pose.y) < self.near_m:
+                self._items.append(self.hidden.pop(key))
+
+
+def _fetch_with_an_earlier_sighting(world, policies, sighting):
+    """The bedroom's mug fetched with the hexagon table under it found only from near,
+    ``sighting`` (or None) already in the task's ``seen``; the result and the robot's last pose."""
+    from assistant.perception.objects import SimObjectDetector
+    from assistant.sim import SimRobot
+
+    plan = _plan("bedroom", [RDTNode("table")], "mug")
+    with SimRobot(world, "original", seed=0) as robot:
+        ctx = TaskContext.start(world, robot, _FoundNear(world, "original", ["hexagontable_1"]),
+                                max_sim_seconds=FETCH_BUDGET_S)
+        if sighting is not None:
+            ctx.seen["mug"] = sighting
+        task = FetchTask(policies, object_detector=SimObjectDetector.for_scene(world.scene("original")))
+        result = task.run(ctx, plan)
+        return result, ctx.pose()
+
+
+def test_an_object_seen_from_afar_on_nothing_mapped_is_looked_at_where_it_was_seen(apartment, policies):
+    """Seen earlier from across the room on no furniture the robot had found (the table under
+    it is found only from near), the mug is looked for at that spot: the fetch ends near it,
+    facing it, not at the first table tried (4.8 m from the mug; before this the robot went
+    back there)."""
+    import math
+
+    from assistant.executor.viewing import HALF_FOV_RAD
+    from assistant.perception.objects import Sighting
+
+    mug = next(o for o in apartment.scene("original").objects if o.name == "mug")
+    far = Sighting("mug", mug.x, mug.y, 0.58, distance_m=4.3, pixels=110, room="bedroom")
+    result, pose = _fetch_with_an_earlier_sighting(apartment, policies, far)
+    assert result.success, result.message
+    assert math.hypot(mug.x - pose.x, mug.y - pose.y) < 2.5
+    bearing = math.atan2(mug.y - pose.y, mug.x - pose.x) - pose.theta
+    assert abs(math.atan2(math.sin(bearing), math.cos(bearing))) < HALF_FOV_RAD
+    assert {s.name: s for s in result.seen}["mug"].distance_m < 2.5  # seen again, from near

@@ -42,6 +42,30 @@ def test_the_plan_keeps_the_word_said_for_the_support(parser):
     assert plan.support == "nightstand" and plan.node_strings == ["bed-left-table"]
 
 
+@pytest.mark.parametrize("text, node, support", [
+    ("go to the bedroom, the keys are on the bed", "room-center-bed", "bed"),
+    ("my phone is on the sofa in the living room", "room-center-couch", "couch"),
+    ("bring me the keys on the bed in the bedroom", "room-center-bed", "bed"),
+    # a table-like support stays a table; a bed said as a landmark stays the reference
+    ("the mug is on the nightstand", "room-center-table", "nightstand"),
+    ("the mug is on the table next to the bed", "bed-beside-table", "table"),
+])
+def test_a_thing_on_a_bed_couch_or_chair_is_sought_there(parser, text, node, support):
+    """Keys are left on the bed and a phone on the couch: a support of another category than a
+    table is the plan's target (the grounders give a table for every place a thing lies), and
+    never its own reference ("from the sofa" is not "the couch in front of the couch")."""
+    plan = parser.parse(text).plan
+    assert plan.node_strings[-1:] == [node] and plan.support == support
+
+
+def test_a_support_is_never_its_own_reference(language, corpus_labels):
+    """"grab the remote from the sofa": the scored grounders read "from the sofa" as a place by
+    the couch; the couch is where the remote lies, not a couch in front of the couch."""
+    parser = CommandParser(language, CombinedGrounder().fit(corpus_labels.records, corpus_labels.groundings))
+    plan = parser.parse("grab the remote from the sofa").plan
+    assert plan.node_strings == ["room-center-couch"] and plan.object == "remote"
+
+
 @pytest.mark.parametrize("text, flag", [
     ("", "empty"),
     ("asdf qwerty zxcv", "not_understood"),
