@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 import sys
 
 from assistant.cli.common import (add_json_flag, emit_json, finite_float, parse_pose, print_table,
@@ -11,17 +12,24 @@ from assistant.cli.common import (add_json_flag, emit_json, finite_float, parse_
 
 
 def _numbers(count: int, what: str):
+    """An argument type for ``count`` finite numbers separated by commas or spaces; ``what``
+    names them in the message (argparse names the option itself)."""
     def parse(text: str) -> tuple[float, ...]:
-        parts = [p for p in text.replace(" ", "").split(",") if p]
+        parts = [p for p in re.split(r"[,;\s]+", text.strip()) if p]
         try:
             values = tuple(float(p) for p in parts)
         except ValueError:
-            raise argparse.ArgumentTypeError(f"{what}: expected {count} numbers, got {text!r}") from None
+            raise argparse.ArgumentTypeError(f"expected {count} numbers ({what}), got {text!r}") from None
         if len(values) != count or not all(math.isfinite(v) for v in values):
-            raise argparse.ArgumentTypeError(f"{what}: expected {count} finite numbers, got {text!r}")
+            raise argparse.ArgumentTypeError(f"expected {count} finite numbers ({what}), got {text!r}")
         return values
 
     return parse
+
+
+#: camera heights (metres above the floor found) a depth camera in a home is seldom outside:
+#: a floor found farther off says more of a wrong --depth-scale than of the camera
+LIKELY_CAMERA_HEIGHT_M = (0.35, 2.2)
 
 
 #: largest --at (seconds): a week of recording
@@ -40,11 +48,13 @@ def register(subparsers) -> None:
     source.add_argument("--scene", default="original", help="scene: original or modified")
     source.add_argument("--pose", type=parse_pose, help="robot pose X,Y,HEADING (m, m, rad)")
     disk = parser.add_argument_group("frame from disk")
-    disk.add_argument("--depth", metavar="FILE.png", help="16-bit depth image")
-    disk.add_argument("--intrinsics", type=_numbers(4, "--intrinsics"), metavar="FX,FY,CX,CY",
+    disk.add_argument("--depth", metavar="FILE.png",
+                      help="depth image: 16-bit PNG or TIFF (depth units), 32-bit float TIFF or .npy (metres)")
+    disk.add_argument("--intrinsics", type=_numbers(4, "FX,FY,CX,CY in pixels"), metavar="FX,FY,CX,CY",
                       help="pinhole intrinsics in 0-based pixels")
     disk.add_argument("--depth-scale", type=finite_float, metavar="S",
-                      help="metres per depth unit (0.001 for millimetres)")
+                      help="metres per depth unit (0.001 for millimetres, 1 for metres; "
+                           "guessed from the readings when left out)")
     disk.add_argument("--camera-height", type=finite_float, metavar="H",
                       help="camera height above the floor (m); with --tilt predicts the floor")
     disk.add_argument("--tilt", type=finite_float, metavar="DEG", help="camera pitch down (degrees)")
@@ -56,6 +66,13 @@ def register(subparsers) -> None:
                         help="with --replay: only frame N (0 = the first)")
     replay.add_argument("--at", type=finite_float, metavar="SECONDS",
                         help="with --replay: only the frame in view SECONDS after the recording starts")
+    parser.epilog = ("Output: the floor found (the camera's height above it, its tilt and roll), then each "
+                     "piece of furniture: category, view subclass (the side seen: +front, +side, +back), "
+                     "position x ahead and y left (m), facing (rad: the direction its front faces, "
+                     "0 = along x, counter-clockwise; - for tables), the classifier's confidence, and "
+                     "notes (unsure: look again from elsewhere; partial: cut by the image border; "
+                     "beyond range: it may go on past the 4 m the detector reads); then the things on "
+                     "the floor it would not name.")
     parser.add_argument("--orientation", default="plane", choices=("plane", "linear"),
                         help="orientation estimator (default: plane)")
     parser.add_argument("--classifier", default=None, choices=("gsvm", "lsvm", "autoencoder"),
@@ -156,6 +173,22 @@ def _request(req: dict) -> dict:
         if not (isinstance(pose, (list, tuple)) and len(pose) == 3):
             raise AssistantError("pose: expected [x, y, heading]")
         out["pose"] = tuple(float(v) for v in pose)
+    for key, count, what in (("intrinsics", 4, "[fx, fy, cx, cy] in pixels"),):
+        value = out.get(key)
+        if value is not None:
+            if isinstance(value, str):
+                value = _numbers(count, what)(value)
+            if not (isinstance(value, (list, tuple)) and len(value) == count
+                    and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)):
+                raise AssistantError(f"{key}: expected {count} numbers, {what}, got {value!r}")
+            out[key] = tuple(float(v) for v in value)
+    for key in ("depth_scale", "camera_height", "tilt"):
+        value = out.get(key)
+        if value is not None and (isinstance(value, bool) or not isinstance(value, (int, float))):
+            raise AssistantError(f"{key}: expected a number, got {value!r}")
+    for key in ("depth", "world"):
+        if out.get(key) is not None and not isinstance(out[key], str):
+            raise AssistantError(f"{key}: expected a file or world name as a string, got {out[key]!r}")
     out.setdefault("scene", "original")
     return out
 
@@ -195,6 +228,12 @@ def _handle(detector, req: dict) -> dict:
                              "if they are not a Kinect's and millimetres)")
     out.update(result.to_dict())
     out["ms"] = round(result.timings_ms.get("total", 0.0), 1)
+    floor = out.get("floor")
+    if req.get("depth") and floor and not req.get("camera_height") and not (
+            LIKELY_CAMERA_HEIGHT_M[0] <= floor["height"] <= LIKELY_CAMERA_HEIGHT_M[1]):
+        out.setdefault("assumed", []).append(
+            f"the floor was found {floor['height']:.2f} m below the camera, an unlikely height for a "
+            "depth camera: if the depth units are wrong, so is everything here — check --depth-scale")
     return out
 
 
@@ -207,8 +246,22 @@ def _print(result: dict) -> None:
         print("floor: not found")
     if not result["detections"]:
         print(f"no furniture: {result.get('reason', 'nothing recognised')}")
-        return
-    rows = [(d["category"], d["subclass"], d["x"], d["y"],
-             "-" if d["facing"] is None else f"{d['facing']:.2f}", d["confidence"])
-            for d in result["detections"]]
-    print_table(rows, ["category", "subclass", "x (m)", "y (m)", "facing (rad)", "confidence"])
+    else:
+        rows = [(d["category"], d["subclass"] if d["subclass"] != d["category"] else "-", d["x"], d["y"],
+                 "-" if d["facing"] is None else f"{d['facing']:.2f}", d["confidence"], _notes(d))
+                for d in result["detections"]]
+        print_table(rows, ["category", "view", "x (m)", "y (m)", "facing (rad)", "confidence", "notes"])
+    for u in result.get("unknown", []):
+        why = {"unsure": "the classifier is unsure",
+               "disputed": "cut by the range, the second opinion disagrees",
+               "no surface": "tall, with no seat, mattress or top"}.get(u["why"], u["why"])
+        what = (f"not one of the five kinds ({u['probability']:.2f}): a bench, dresser, shelf …" if u["best"] == "other"
+                else f"looks most like a {u['best']} ({u['probability']:.2f}), but {why}")
+        print(f"unknown thing at x {u['x']:.2f} m, y {u['y']:.2f} m, {u['height']:.2f} m high: {what}")
+
+
+def _notes(detection: dict) -> str:
+    """The caveats of a detection, as words: unsure, partial, beyond range."""
+    notes = [word for key, word in (("unsure", "unsure"), ("partial", "partial"),
+                                    ("beyond_range", "beyond range")) if detection.get(key)]
+    return ", ".join(notes) or "-"

@@ -73,7 +73,7 @@ def pngs(tmp_path):
 
 def test_pictures_that_are_not_depth_frames_are_refused(pngs, capsys):
     grey, big, bomb = pngs
-    for path, words in ((grey, "is not depth"), (big, "more than a depth camera gives"), (bomb, "pixels")):
+    for path, words in ((grey, "picture, not depth"), (big, "more than a depth camera gives"), (bomb, "pixels")):
         code, out, err = run(["perceive", "--depth", str(path), "--intrinsics", "500,500,32,24",
                               "--depth-scale", "0.001"], capsys)
         assert code == 2 and words in err, err
@@ -254,3 +254,31 @@ def test_a_viewer_heading_of_many_turns_is_the_same_heading_without_overflow(cap
     code, out, err = run(["relations", "--world", "apartment", "--viewer", str(0.5 + 4 * np.pi), "--json"],
                          capsys)
     assert code == 0 and json.loads(out)["viewer_heading"] == pytest.approx(0.5)
+
+
+def test_perceive_text_says_its_doubts_and_what_it_would_not_name(capsys, shared_dir):
+    """The text output (not only --json) says a detection is unsure or cut by the range, lists
+    the things it would not name, and takes intrinsics separated by spaces."""
+    frame = shared_dir / "realdata" / "sunrgbd_kv2_mmdet3d" / "000001_depth.png"
+    if not frame.is_file():
+        pytest.skip("no ../shared/realdata")
+    code, out, err = run(["perceive", "--depth", str(frame), "--intrinsics", "529.5 529.5 365 265",
+                          "--depth-scale", "0.001"], capsys)
+    assert code == 0, err
+    bed = next(line for line in out.splitlines() if line.startswith("bed "))
+    assert "unsure, beyond range" in bed
+    assert "unknown thing at x" in out and "not one of the five kinds" in out
+
+
+def test_perceive_warns_of_a_floor_at_an_unlikely_height(capsys, shared_dir, tmp_path):
+    """Depth in the wrong units made up furniture and said nothing: a floor found 0.28 m below
+    the camera is now said to be unlikely, with the scale to check."""
+    frame = shared_dir / "realdata" / "nyu_livingroom_unidepth" / "depth.png"
+    if not frame.is_file():
+        pytest.skip("no ../shared/realdata")
+    shrunk = tmp_path / "wrong_units.png"
+    Image.fromarray((np.asarray(Image.open(frame)).astype(np.float64) * 0.28).astype(np.uint16)).save(shrunk)
+    code, out, err = run(["perceive", "--depth", str(shrunk), "--json"], capsys)
+    assert code == 0, err
+    assert json.loads(out)["floor"]["height"] < 0.35
+    assert "unlikely height for a depth camera" in err and "check --depth-scale" in err
