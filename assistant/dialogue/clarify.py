@@ -289,3 +289,54 @@ def fetch_command_text(obj: str | None, phrase: str | None, room: str | None) ->
     if room:
         parts.append(f"in the {room}")
     return " ".join(parts)
+
+
+#: words that put a piece of furniture after them ("on the …", "next to the …", "go to the …")
+PLACE_PREPOSITIONS = frozenset({"on", "onto", "by", "near", "to", "at", "beside", "behind", "under", "from", "into",
+                                "towards", "toward", "of", "past", "in", "inside", "off", "around", "between", "and"})
+#: words that may stand between the preposition and the furniture word
+_SLOT_DETERMINERS = frozenset({"the", "a", "an", "my", "your", "our", "his", "her", "that", "this", "their"})
+
+
+def in_place_slot(tokens: list[str], word: str) -> bool:
+    """Whether ``word`` (lower case) stands where a piece of furniture would in the tokens:
+    after a determiner (and at most two describing words) that follows a place preposition —
+    "by the old wardrobe", "next to my dresser", "go to the sideboard". A word elsewhere ("my
+    mom keeps her glasses …", "if she asks for …") is not a place the person named."""
+    for i, token in enumerate(tokens):
+        if token != word:
+            continue
+        j = i - 1
+        while j >= 0 and i - j <= 3 and tokens[j] not in _SLOT_DETERMINERS and tokens[j] not in PLACE_PREPOSITIONS:
+            j -= 1
+        if j >= 1 and tokens[j] in _SLOT_DETERMINERS and tokens[j - 1] in PLACE_PREPOSITIONS:
+            return True
+    return False
+
+
+#: prepositions after which a place word without a determiner gets "the" ("go to couch")
+_ARTICLE_PREPOSITIONS = r"to|into|towards|toward|on|onto|near|beside|behind|by|of|in|inside|at|from|under"
+#: verbs of going straight before a place ("go kitchen" → "go to the kitchen")
+_GO_VERBS = r"go|come|walk|head|drive|move|run|roll"
+
+
+def with_articles(text: str, heads: frozenset[str]) -> str:
+    """``text`` with "the" put before a place said without a determiner, as people writing a
+    second language or on a phone do: "go to couch" → "go to the couch", "go kitchen" → "go to
+    the kitchen", "in front of blue chair" → "in front of the blue chair". A place is a word of
+    ``heads`` (this home's room words, furniture and describing words) or one letter off one of
+    5 letters or more ("go to bedrom": the tagger corrects it once it reads as a place). The
+    chunker learned places from sentences that always had the article; without it "go to couch"
+    was "I don't know the word 'couch'"."""
+    def is_head(word: str) -> bool:
+        w = word.lower()
+        return w in heads or known_spelling(w, heads) is not None
+
+    def after_preposition(m: re.Match) -> str:
+        return f"{m.group(1)} the {m.group(2)}" if is_head(m.group(2)) else m.group(0)
+
+    def after_verb(m: re.Match) -> str:
+        return f"{m.group(1)} to the {m.group(2)}" if is_head(m.group(2)) else m.group(0)
+
+    out = re.sub(rf"\b({_ARTICLE_PREPOSITIONS})\s+([A-Za-z]+)\b", after_preposition, text, flags=re.IGNORECASE)
+    return re.sub(rf"\b({_GO_VERBS})\s+([A-Za-z]+)\b", after_verb, out, flags=re.IGNORECASE)

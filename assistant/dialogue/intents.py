@@ -23,7 +23,8 @@ _PLACE_WORDS = r"(?:on|in|under|by|at|near|next to|beside|behind|inside|in front
 TOLD_PLACES = (
     r"^(?:(?:ok|okay|so|and|robot|please) )*(?:please )?(?:can you |could you |will you )?(?:remember|note|make a note|"
     r"keep in mind|dont forget|do not forget)(?: that)?(?: i (?:have |ve )?(?:put|left|placed))? (?P<thing>(?:my|the|our|his|"
-    r"her) [a-z]+(?: (?!is\b|are\b|now\b)[a-z]+)?) (?:(?:is|are) (?:now )?)?(?P<place>" + _PLACE_WORDS + r" [a-z ]+)$",
+    r"her) [a-z]+(?: (?!is\b|are\b|now\b|usually\b|always\b|normally\b)[a-z]+)?) (?:(?:is|are) "
+    r"(?:now |usually |always |normally |mostly )?)?(?P<place>" + _PLACE_WORDS + r" [a-z ]+)$",
     r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|actually|no|sorry) )*(?:i|ive|i have|weve|we have|we) "
     r"(?:just )?(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!(?:next|on|in|under|by|"
     r"at|near|beside|behind|inside|to|onto|into|back)\b)[a-z]+)?|it|them) "
@@ -68,7 +69,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("dont", (r"^(please |no |no no )?(dont|do not|never|better not)( you)? (go|bring|fetch|get|come|drive|move|turn|"
               r"look|search|touch|enter|leave)\b",)),
     ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
-                r"^(pardon|sorry what|what|huh|repeat)$")),
+                r"^(pardon|sorry what|what|huh|repeat)$",
+                r"^(?:(?:please|sorry|can you|could you|robot) )*(repeat|repeat it|say again|what do you mean|what did you "
+                r"mean|what does that mean|i dont understand|i didnt understand|i didnt get that|pardon me)"
+                r"(?: please| again| that| robot)*$")),
     ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bwhat (can|could) you help (me )?with\b",
               r"\bhow (can|could) you help( me)?\b", r"\bwhat (are|is) you (for|good at)\b", r"\bhow do(es)? (this|you) work\b",
               r"\bwhat do you (understand|know how to do)\b", r"^(commands|options)$")),
@@ -78,7 +82,13 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
     # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
-    ("status", (r"^" + ADDRESS + r"(where are you|what are you doing|what are you up to|are you (done|finished|busy|"
+    ("robot_place", (r"^" + ADDRESS + r"(?:so |and |please tell me |tell me )?(where are you|where you are|where are you at|"
+                     r"(?:which|what) room (?:are you|you are|you|are you in|you are in|you in)(?: in)?|where have you got to|"
+                     r"where did you end up|where are you standing)( now| right now| robot| at the moment| exactly)*$",)),
+    ("why_stopped", (r"\bwhy (?:did|have|has|do) you (?:just )?(?:stop|stopped|stopping|give up|gave up|come back)\b",
+                     r"\bwhy (?:are you|you) (?:not moving|stopped|stopping|standing still)\b", r"^why (?:you )?stop(?:ped)?\b",
+                     r"\bwhy (?:didnt|did not|dont|do not|you not) (?:you )?(?:bring|fetch|get|find|finish|go)\b")),
+    ("status", (r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
                 r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
                 r"( now| robot| right now)?$",)),
     ("come_here", (r"^(?:(?:no|ok|okay|oh|please|robot|hey|right|actually) )*" + ADDRESS + r"(please )?(come|come here|"
@@ -121,7 +131,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                     r"\bwhere (?:does|do) (?:my|the|our|his|her|this|that|these|those) [a-z]+(?: [a-z]+)? (?:go|belong|live)"
                     r"(?: now)?$")),
     ("where_check", None),  # WHERE_CHECKS, below: "is my mug in the bedroom?"
-    ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"\bhow (do|can|would|should) i (get|go) there\b", r"\bhow do i find\b",
+    ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"^how (?:to|i|do you) (?:get|go|walk) to\b", r"\bhow (do|can|would|should) i (get|go) there\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
                # typed in a hurry: "wher is my mug", "whre are my keys"
@@ -210,6 +220,32 @@ RULES = [(name, (FURNITURE_QUESTIONS if name == "furniture" else WHERE_CHECKS) i
 _COMPILED = [(name, tuple(re.compile(p) for p in patterns)) for name, patterns in RULES]
 
 
+#: chat and phone shorthand → the words it stands for (a whole word, any case)
+SHORTHAND = {
+    "u": "you", "r": "are", "ur": "your", "pls": "please", "plz": "please", "plez": "please", "pleez": "please",
+    "thx": "thanks", "thnx": "thanks", "tnx": "thanks", "ty": "thank you", "tysm": "thank you", "thanx": "thanks",
+    "nvm": "never mind", "nevermind": "never mind", "wat": "what", "wot": "what", "wht": "what", "k": "ok",
+    "kk": "ok", "okey": "okay", "im": "I'm", "pls.": "please", "b4": "before", "rn": "right now", "cud": "could",
+    "wud": "would", "cn": "can", "abt": "about", "bc": "because", "tmrw": "tomorrow", "thru": "through",
+    "bedrm": "bedroom", "livingroom": "living room", "lvngroom": "living room", "diningroom": "dining room",
+    "bathrm": "bathroom", "kitchn": "kitchen", "rm": "room", "frnt": "front", "nxt": "next", "tbl": "table",
+}
+#: after these a "2" is "to" and a "4" is "for" ("go 2 the kitchen", "look 4 my keys"); "2 steps" stays a number
+_NUMBER_WORD_NEXT = r"(?=\s+(?:the|my|your|our|his|her|it|me|him|them|there|here|a|an|bed|kitchen|bedroom|office)\b)"
+
+
+def expand_shorthand(text: str) -> str:
+    """``text`` with chat shorthand written out ("pls check bedrm 4 my keys" → "please check
+    bedroom for my keys"): the words of :data:`SHORTHAND`, and "2"/"4" before a determiner or a
+    place. Everything else is left as typed."""
+    def word(m: re.Match) -> str:
+        return SHORTHAND.get(m.group(0).lower(), m.group(0))
+
+    out = re.sub(r"(?<![\w'’])[A-Za-z][A-Za-z0-9.]*(?![\w'’])", word, text or "")
+    out = re.sub(r"(?<![\w.])2" + _NUMBER_WORD_NEXT, "to", out)
+    return re.sub(r"(?<![\w.])4" + _NUMBER_WORD_NEXT, "for", out)
+
+
 def normalise(text: str) -> str:
     """Lower case, apostrophes dropped ("where's" → "wheres"), other punctuation to spaces."""
     t = (text or "").lower().replace("’", "'").replace("'", "")
@@ -272,7 +308,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise", "told", "on_furniture"})
+                          "praise", "told", "on_furniture", "robot_place", "why_stopped"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -19,15 +19,17 @@ context ("the one with the chairs", "the second", "never mind"). Unknown words a
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import time
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
-                                        options_named, unused_mentions)
+                                        in_place_slot, options_named, unused_mentions, with_articles)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        teach_phrase, told_place, where_check_parts)
+                                        expand_shorthand, teach_phrase, told_place, where_check_parts)
+from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
@@ -100,6 +102,7 @@ class DialogueManager:
         self.on_event = on_event
         self.on_finish = on_finish
         self.on_pose = on_pose
+        self.robot_pose = None  # the robot's pose last reported while a task ran (pose_listener)
         self.pending: dict | None = None
         self.synonyms: dict[str, str] = {}
         self.last_said = ""
@@ -120,6 +123,38 @@ class DialogueManager:
     def activity(self) -> tuple[str, float] | None:
         """While a task runs: (what the robot is doing now, seconds since it started); else None."""
         return self.worker.activity
+
+    @functools.cached_property
+    def _place_heads(self) -> frozenset[str]:
+        """Words that name a place here: the rooms' words, furniture words (any home's: "sofa",
+        "nightstand") and words that describe furniture ("blue", "coffee", "round")."""
+        from assistant.grounding.vocabulary import DESCRIPTORS
+
+        rooms = {w for r in self.rooms for w in r.split() if len(w) > 2}
+        models = {w for f in self.world.scene(self.scene).furniture for w in f.model.split()}
+        return frozenset(rooms | set(FURNITURE_WORDS) | set(DESCRIPTORS) | models)
+
+    def pose_listener(self, pose) -> None:
+        """Told the robot's true pose now and then while a task runs: kept for "where are you?",
+        and passed on to ``on_pose`` (the 3D view) when there is one."""
+        self.robot_pose = pose
+        if self.on_pose is not None:
+            self.on_pose(pose)
+
+    def robot_room(self) -> tuple[str | None, bool]:
+        """(the room the robot is in, whether it has moved this conversation): from the pose last
+        reported, else the last task's final pose, else the world's start pose."""
+        xy, moved = None, True
+        if self.robot_pose is not None:
+            xy = (self.robot_pose.x, self.robot_pose.y)
+        else:
+            final = next((t.data["final_pose"] for t in reversed(self.history)
+                          if t.final and t.data.get("final_pose")), None)
+            xy = tuple(final[:2]) if final else None
+        if xy is None:
+            xy, moved = (self.world.start.x, self.world.start.y), False
+        room = self.world.floorplan.room_at(float(xy[0]), float(xy[1]))
+        return getattr(room, "name", room), moved
 
     def greeting(self) -> str:
         return (f"Hello! I'm in the {self.world.name} ({_join(['the ' + r for r in self.rooms])}). "
@@ -148,6 +183,7 @@ class DialogueManager:
                               f"{error}). Please say it another way.", "none", "failed", start)
 
     def _handle(self, text: str, start: float) -> Turn:
+        text = with_articles(expand_shorthand(text), self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
         intent = classify(text)
         name = intent.name
         if name == "empty":
@@ -200,6 +236,10 @@ class DialogueManager:
             return self._turn(text, name, "Goodbye.", "leave", "answered", start)
         if name in SOCIAL_REPLIES:
             return self._turn(text, name, SOCIAL_REPLIES[name], start=start)
+        if name == "robot_place":
+            return self._robot_place(text, start)
+        if name == "why_stopped":
+            return self._why_stopped(text, start)
         if name == "status":
             doing = self.activity
             return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
@@ -243,6 +283,36 @@ class DialogueManager:
             # a thing's name on its own ("mug?", "couch"): asked where it is
             return self._where(text, Intent("where", f"where is the {bare}"), start)
         return self._command(text, start)
+
+    # ------------------------------------------------------------------ about the robot itself
+    def _robot_place(self, text: str, start: float) -> Turn:
+        """"where are you?", "what room are you in?": the robot's room, and what it is doing."""
+        room, moved = self.robot_room()
+        where = f"I'm in the {room}" if room else "I'm between rooms"
+        doing = self.activity
+        if doing is not None:
+            reply = f"{where}, {doing[0]}."
+        else:
+            reply = f"{where}{'' if moved else ', where I started'}. What can I do for you?"
+        return self._turn(text, "robot_place", reply, start=start, room=room)
+
+    def _why_stopped(self, text: str, start: float) -> Turn:
+        """"why did you stop?": how the last task ended, in its own words."""
+        if self.busy:
+            doing = self.activity
+            return self._turn(text, "why_stopped", f"I haven't stopped — I'm {doing[0] if doing else 'still at it'}.",
+                              start=start)
+        last = next((t for t in reversed(self.history) if t.final and t.action in ("fetch", "search")), None)
+        if last is None:
+            return self._turn(text, "why_stopped", "I haven't been asked to do anything yet. What can I do for you?",
+                              start=start)
+        if last.outcome == "stopped":
+            reply = "You asked me to stop. Say \"carry on\" and I'll go on."
+        elif last.outcome == "success":
+            reply = f"I'd done what you asked: {last.reply[0].lower() + last.reply[1:]}"
+        else:
+            reply = f"I couldn't go on: {last.reply[0].lower() + last.reply[1:]}"
+        return self._turn(text, "why_stopped", reply, start=start)
 
     # ------------------------------------------------------------------ stop / wait
     def _resume(self, text: str, start: float) -> Turn:
@@ -672,7 +742,11 @@ class DialogueManager:
         plan = parsed.plan
         unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in POLITE_WORDS]
         tags = dict(zip(parsed.analysis.tokens, parsed.analysis.pos))
-        nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))]
+        tokens = [str(t).lower() for t in parsed.analysis.tokens]
+        # an unknown noun where a piece of furniture would be ("by the wardrobe"); one elsewhere
+        # ("my mom keeps her glasses case …") is no landmark to ask about
+        nouns = [w for w in unused if str(tags.get(w, "NN")).startswith(("NN", "FUR"))
+                 and in_place_slot(tokens, w.lower())]
         # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
         nouns += [r for n in plan.nodes for r, _ in n.pairs if r not in FURNITURE_WORDS.values()
                   and r not in STRUCTURE_REFERENCES and not is_object_word(r) and r not in nouns]
@@ -746,6 +820,7 @@ class DialogueManager:
             items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]
             said = [*node.descriptors, node.support] if node.support and node.support != node.target \
                 else list(node.descriptors)  # "the desk": a table whose model is a desk
+            said += [w for w in text.lower().split() if w in LOOKS]  # "the blue chair": its model
             kinds = [f for f in items if any(d in f.model.split() for d in said)]
             homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
             # the furniture it is told by ("the table next to the bed"): only a room with that too
@@ -847,6 +922,9 @@ class DialogueManager:
             return None
         if p["kind"] == "word":
             word = p["word"]
+            if len(norm.split()) > 4 and intent.name == "command":  # "go to the blue chair": a new request
+                self.pending = None
+                return None
             choice = next((f for f in FURNITURE_CHOICES if re.search(rf"\b{f}s?\b", norm)), None)
             if choice is None and norm in ("sofa",):
                 choice = "couch"

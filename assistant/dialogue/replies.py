@@ -111,7 +111,9 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
                                  item.word if item else None, phrase, source="fetch")
         moved = obj in summary["moved"] or (
             before is not None and place is None and before.furniture != (item.id if item else None))
-        reply = f"Here {'they are' if it_them(obj) == 'them' else 'it is'}: I can see your {obj} {where}." + (
+        carry = (f" I can't carry {it_them(obj)} to you — I have no arm — but I'm right by {it_them(obj)}."
+                 if re.search(r"\b(bring|fetch|grab|carry|hand)\b|\bget me\b", text.lower()) else "")
+        reply = f"Here {'they are' if it_them(obj) == 'them' else 'it is'}: I can see your {obj} {where}." + carry + (
             " It wasn't where I saw it last; I've updated my memory." if moved else "")
         data["remembered"] = True
         return Turn(text, "command", reply, "fetch", "success", data, time.perf_counter() - start), pending

@@ -7,8 +7,8 @@ from dataclasses import dataclass, field
 __all__ = ["HELP_TEXT", "NUMBER_WORDS", "SOCIAL_REPLIES", "Turn", "join_words"]
 
 NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
-HELP_TEXT = ("You can ask me to fetch things (\"bring me the mug from the table in front of the couch "
-             "in the living room\"), ask where something is (\"where is my mug?\", \"have you seen my "
+HELP_TEXT = ("You can send me to your things (\"bring me the mug from the table in front of the couch "
+             "in the living room\" — I go and find it; I have no arm to carry it), ask where something is (\"where is my mug?\", \"have you seen my "
              "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
              "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
              "\"repeat that\", \"which home am I in\", \"start over\" or \"bye\".")
@@ -23,9 +23,9 @@ SOCIAL_REPLIES = {
                  "for help now — 999, 911 or 112, or someone close by. I'm staying here.",
     "rude": "I'm sorry I'm not being more helpful. Tell me what you need, for example \"bring me the mug "
             "from the bedroom\".",
-    "smalltalk": "I'm the home robot: I find things, tell you where they are and fetch them. What can I do "
+    "smalltalk": "I'm the home robot: I find things, tell you where they are and go to them. What can I do "
                  "for you?",
-    "out_of_scope": "I can't help with that: I find things in this home, tell you where they are and fetch "
+    "out_of_scope": "I can't help with that: I find things in this home, tell you where they are and go to "
                     "them. Say \"help\" for examples.",
     "no_arm": "I can't pick things up, carry them or open things: I have no arm. I can find your things, tell "
               "you where they are and take you to them — for example \"where is my mug?\" or \"go to the couch\".",

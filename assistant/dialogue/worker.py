@@ -161,10 +161,10 @@ class TaskWorker:
         on_event = self._events(job, recorder, obj)
         try:
             if job.kind == "search":
-                result = c.services.search(text, c.world, c.scene, on_event, stop=job.stop, on_pose=c.on_pose,
+                result = c.services.search(text, c.world, c.scene, on_event, stop=job.stop, on_pose=c.pose_listener,
                                            style=style)
             else:
-                result = c.services.fetch(text, c.world.name, c.scene, on_event, stop=job.stop, on_pose=c.on_pose)
+                result = c.services.fetch(text, c.world.name, c.scene, on_event, stop=job.stop, on_pose=c.pose_listener)
         except Stopped:
             final = self._stopped(job, text, recorder, None, start)
         except Exception as error:  # noqa: BLE001 — any failure of the task becomes a reply, the chat goes on

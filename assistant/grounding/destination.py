@@ -27,6 +27,14 @@ _PATTERN = re.compile(r"^(?:(?:please|robot|okay|ok|now|just|um|uh|can you|could
                       r"(?: (?:in|inside) (?:the|my|our) [a-z ]+)?(?: please| now| for me)*$")
 
 
+#: colour and material words said of furniture ("the blue chair", "the wooden table"): a depth
+#: camera cannot see them, so they are no descriptor of the node; the words stay in the text,
+#: where the dialogue reads them against the furniture's model names
+LOOKS = frozenset({"blue", "red", "green", "white", "black", "brown", "grey", "gray", "yellow", "pink", "orange",
+                   "purple", "beige", "cream", "wood", "wooden", "leather", "glass", "metal", "plastic", "old",
+                   "new", "comfy", "soft"})
+
+
 def said_destination(words: Sequence[str], rooms: Sequence[str] = ()) -> RDTNode | None:
     """The furniture node of a "go to the couch" command (see the module), or None. ``rooms``:
     the home's room names, so a room said after the furniture is not read as part of it."""
@@ -39,7 +47,8 @@ def said_destination(words: Sequence[str], rooms: Sequence[str] = ()) -> RDTNode
         return None
     head = canonical_word(thing[-1])
     category = furniture_category(head)
-    if category is None or any(w not in DESCRIPTORS and canonical_word(w) != head for w in thing[:-1]):
+    if category is None or any(w not in DESCRIPTORS and w not in LOOKS and canonical_word(w) != head
+                               for w in thing[:-1]):
         return None
     if any(r in " ".join(thing) for r in rooms):
         return None

@@ -24,7 +24,10 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("find my phone", "where"), ("could you look for the remote please", "where"), ("locate my glasses case", "where"),
     ("find my phone in the bedroom", "command"), ("I'm looking for my mug, it is on the table by the bed", "command"),
     ("go to the table where the chairs are", "command"), ("the mug is where the chairs are", "command"),
-    ("where are you?", "status"), ("what are you doing", "status"), ("are you done", "status"),
+    ("where are you?", "robot_place"), ("what room are you in?", "robot_place"), ("which room you are in",
+     "robot_place"), ("where are you now", "robot_place"), ("why did you stop?", "why_stopped"),
+    ("why you not bring?", "why_stopped"), ("repeat please", "repeat"), ("what do you mean?", "repeat"),
+    ("what are you doing", "status"), ("are you done", "status"),
     ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "wellbeing"),
     ("what's your name", "smalltalk"), ("what time is it", "out_of_scope"), ("turn on the lights", "out_of_scope"),
     ("good robot", "praise"), ("perfect", "praise"), ("turn left into the bedroom", "command"),
@@ -157,3 +160,42 @@ def test_a_place_told_to_be_remembered(text, parts):
 ])
 def test_more_of_what_people_say_in_other_homes(text, intent):
     assert classify(text).name == intent
+
+
+
+@pytest.mark.parametrize("typed, meant", [
+    ("pls check bedrm 4 my keys", "please check bedroom for my keys"),
+    ("go 2 the kitchen", "go to the kitchen"),
+    ("take 2 steps forward", "take 2 steps forward"),  # a number stays a number
+    ("where r u", "where are you"),
+    ("thx", "thanks"), ("nvm", "never mind"), ("wat room r u in", "what room are you in"),
+    ("Is my mug in the living room?", "Is my mug in the living room?"),  # nothing to write out
+])
+def test_chat_shorthand_is_written_out(typed, meant):
+    from assistant.dialogue.intents import expand_shorthand
+
+    assert expand_shorthand(typed) == meant
+
+
+@pytest.mark.parametrize("typed, meant", [
+    ("go to couch", "go to the couch"), ("go kitchen", "go to the kitchen"),
+    ("go to bedrom", "go to the bedrom"),  # one letter off a room word: the tagger corrects it after "the"
+    ("in front of blue chair", "in front of the blue chair"),
+    ("go to the couch", "go to the couch"), ("I want to go home", "I want to go home"),
+    ("how to get to my mug", "how to get to my mug"), ("turn to face the bed", "turn to face the bed"),
+])
+def test_a_place_said_without_the_gets_it(typed, meant):
+    from assistant.dialogue.clarify import with_articles
+
+    heads = frozenset({"couch", "chair", "blue", "kitchen", "bedroom", "bed", "table"})
+    assert with_articles(typed, heads) == meant
+
+
+@pytest.mark.parametrize("text, word, slot", [
+    ("put it by the wardrobe", "wardrobe", True), ("next to my old dresser", "dresser", True),
+    ("my mom keeps her glasses case on the table", "mom", False), ("if she asks for her glasses", "asks", False),
+])
+def test_an_unknown_word_is_a_place_only_where_furniture_would_be(text, word, slot):
+    from assistant.dialogue.clarify import in_place_slot
+
+    assert in_place_slot(text.split(), word) is slot

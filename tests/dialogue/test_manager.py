@@ -226,7 +226,7 @@ def test_the_chat_shows_its_status_line_on_a_terminal_only(tmp_path, monkeypatch
 
 def test_the_robot_says_what_it_is_doing_and_answers_what_it_cannot_do(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(hold=True))
-    assert m.handle("where are you?").reply.startswith("Nothing right now")  # not "what are you looking for"
+    assert m.handle("what are you doing?").reply.startswith("Nothing right now")  # not "what are you looking for"
     assert m.handle("go into the bedroom").outcome == "started"
     deadline = time.monotonic() + 5
     while m.activity is None or m.activity[0] == "on my way":  # the stand-in enters the bedroom first
@@ -662,3 +662,36 @@ def test_furniture_the_home_lacks_is_said_to_be_missing(tmp_path):
     assert turn.reply.startswith("There is no bed in this home — the furniture here is") and turn.action != "fetch"
     assert m.handle("bring me the mug from the dresser in the studio").reply.startswith(
         "I don't know which of the furniture here is the dresser")  # a word for some other piece: asked
+
+
+def test_where_are_you_and_why_did_you_stop(services, tmp_path):
+    """Questions about the robot itself were taken for a fetch ("which room should I look for it
+    in?"): where it is comes from its pose (the start before any task), why it stopped from how
+    the last task ended."""
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("what room are you in?").reply == "I'm in the hallway, where I started. What can I do for you?"
+    assert m.handle("why did you stop?").reply.startswith("I haven't been asked to do anything yet")
+    m.handle("go to the bedroom")
+    m.wait(10)
+    assert m.handle("why did you stop?").reply.startswith("I'd done what you asked: ")
+    from assistant.geometry import Pose2D
+
+    m.pose_listener(Pose2D(5.0, -3.0, 0.0))  # reported while a task ran: in the bedroom
+    assert m.handle("where r u").reply.startswith("I'm in the bedroom.")
+
+
+def test_shorthand_and_missing_articles_and_ordinary_words(services, tmp_path):
+    """A phone typist and a second-language speaker: "pls", "bedrm", "4" and "go to couch" are
+    understood; "my mom …" does not make the robot ask whether "mom" is a table."""
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    check = m.handle("pls check bedrm 4 mug")
+    assert check.action == "fetch" and check.reply == "Going to the bedroom."
+    m.wait(10)
+    couch = m.handle("go to couch")
+    assert couch.action == "fetch" and couch.reply == "Going to the living room."
+    m.wait(10)
+    told = m.handle("My mom keeps her glasses case on the coffee table in the living room")
+    assert "mom" not in told.reply and not told.reply.startswith("I don't know")
+    m.wait(10)
+    assert m.handle("thx").reply == "You're welcome."
