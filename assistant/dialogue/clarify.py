@@ -325,18 +325,26 @@ def with_articles(text: str, heads: frozenset[str]) -> str:
     second language or on a phone do: "go to couch" → "go to the couch", "go kitchen" → "go to
     the kitchen", "in front of blue chair" → "in front of the blue chair". A place is a word of
     ``heads`` (this home's room words, furniture and describing words) or one letter off one of
-    5 letters or more ("go to bedrom": the tagger corrects it once it reads as a place). The
+    5 letters or more, written right ("go to bedrom" → "go to the bedroom"; also after "the"). The
     chunker learned places from sentences that always had the article; without it "go to couch"
     was "I don't know the word 'couch'"."""
-    def is_head(word: str) -> bool:
+    def head(word: str) -> str | None:
+        """The place word ``word`` is, spelt right; None if it is none."""
         w = word.lower()
-        return w in heads or known_spelling(w, heads) is not None
+        return w if w in heads else known_spelling(w, heads)
 
     def after_preposition(m: re.Match) -> str:
-        return f"{m.group(1)} the {m.group(2)}" if is_head(m.group(2)) else m.group(0)
+        found = head(m.group(2))
+        return f"{m.group(1)} the {found}" if found else m.group(0)
 
     def after_verb(m: re.Match) -> str:
-        return f"{m.group(1)} to the {m.group(2)}" if is_head(m.group(2)) else m.group(0)
+        found = head(m.group(2))
+        return f"{m.group(1)} to the {found}" if found else m.group(0)
+
+    def after_the(m: re.Match) -> str:
+        found = head(m.group(2))
+        return f"{m.group(1)} {found}" if found and found != m.group(2).lower() else m.group(0)
 
     out = re.sub(rf"\b({_ARTICLE_PREPOSITIONS})\s+([A-Za-z]+)\b", after_preposition, text, flags=re.IGNORECASE)
-    return re.sub(rf"\b({_GO_VERBS})\s+([A-Za-z]+)\b", after_verb, out, flags=re.IGNORECASE)
+    out = re.sub(rf"\b({_GO_VERBS})\s+([A-Za-z]+)\b", after_verb, out, flags=re.IGNORECASE)
+    return re.sub(r"\b(the|my|your)\s+([A-Za-z]{5,})\b", after_the, out, flags=re.IGNORECASE)

@@ -309,7 +309,8 @@ class DialogueManager:
         if last.outcome == "stopped":
             reply = "You asked me to stop. Say \"carry on\" and I'll go on."
         elif last.outcome == "success":
-            reply = f"I'd done what you asked: {last.reply[0].lower() + last.reply[1:]}"
+            done = re.sub(r"^Done\s*[—-]\s*", "", last.reply)
+            reply = f"I'd done what you asked: {done[0].lower() + done[1:]}"
         else:
             reply = f"I couldn't go on: {last.reply[0].lower() + last.reply[1:]}"
         return self._turn(text, "why_stopped", reply, start=start)
