@@ -234,16 +234,27 @@ SHORTHAND = {
 _NUMBER_WORD_NEXT = r"(?=\s+(?:the|my|your|our|his|her|it|me|him|them|there|here|a|an|bed|kitchen|bedroom|office)\b)"
 
 
+#: prepositions as second-language speakers often put them → the English ones
+SECOND_LANGUAGE = ((r"\bnear of\b", "near"), (r"\bnext of\b", "next to"), (r"\bbeside of\b", "beside"),
+                   (r"\bbehind of\b", "behind"), (r"\bclose of\b", "close to"), (r"\binside of\b", "inside"),
+                   (r"\bin front the\b", "in front of the"), (r"\bnear to\b", "near"),
+                   (r"\bin the front of\b", "in front of"))
+
+
 def expand_shorthand(text: str) -> str:
     """``text`` with chat shorthand written out ("pls check bedrm 4 my keys" → "please check
-    bedroom for my keys"): the words of :data:`SHORTHAND`, and "2"/"4" before a determiner or a
-    place. Everything else is left as typed."""
+    bedroom for my keys"): the words of :data:`SHORTHAND`, "2"/"4" before a determiner or a
+    place, and the prepositions of :data:`SECOND_LANGUAGE` ("near of the bed" → "near the
+    bed"). Everything else is left as typed."""
     def word(m: re.Match) -> str:
         return SHORTHAND.get(m.group(0).lower(), m.group(0))
 
     out = re.sub(r"(?<![\w'’])[A-Za-z][A-Za-z0-9.]*(?![\w'’])", word, text or "")
     out = re.sub(r"(?<![\w.])2" + _NUMBER_WORD_NEXT, "to", out)
-    return re.sub(r"(?<![\w.])4" + _NUMBER_WORD_NEXT, "for", out)
+    out = re.sub(r"(?<![\w.])4" + _NUMBER_WORD_NEXT, "for", out)
+    for pattern, english in SECOND_LANGUAGE:  # "go near of the bed"
+        out = re.sub(pattern, english, out, flags=re.IGNORECASE)
+    return out
 
 
 def normalise(text: str) -> str:

@@ -212,8 +212,9 @@ class DialogueManager:
             return self._turn(text, name, HELP_TEXT, start=start)
         if name == "which_home":
             rooms = _join(["the " + r for r in self.rooms])
-            return self._turn(text, name, f"You're in the {self.world.name} ({self.scene} furniture), "
-                              f"with {rooms}.", start=start, world=self.world.name, scene=self.scene)
+            layout = "" if self.scene == "original" else f" ({self.scene} furniture)"  # only when not as built
+            return self._turn(text, name, f"You're in the {self.world.name}{layout}, with {rooms}.", start=start,
+                              world=self.world.name, scene=self.scene)
         if name == "start_over":
             self.pending = None
             self.synonyms.clear()

@@ -83,7 +83,10 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             "target_furniture": furniture or None, "executor_message": message,
             "seen": summary["seen"]}
     if result.failure and result.failure != "not_visible":
-        reply = f"Sorry, I couldn't do it: {message or result.failure}."
+        # the executor's message names the plan's node ("node room-center-table: no table seen in
+        # the hallway"): the person gets the reason, not the node
+        reason = re.sub(r"^node [a-z-]+: ", "", message or result.failure.replace("_", " "))
+        reply = f"Sorry, I couldn't do it: {reason}."
         return Turn(text, "command", reply, "fetch", "failed", data, time.perf_counter() - start), pending
     details = getattr(result.task, "details", None) or {}
     if details.get("motion"):  # "turn around": said what it did

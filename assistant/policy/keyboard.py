@@ -41,7 +41,8 @@ KEY_COMMANDS: dict[str, tuple[float, float]] = {
 #: other spellings accepted (one per line on a pipe, or what curses reports)
 KEY_ALIASES = {"up": "w", "forward": "w", "down": "s", "back": "s", "backward": "s",
                "left": "a", "right": "d", "stop": "x", "space": "x", " ": "x",
-               "quit": "q", "finish": "q", "save": "q", "esc": "esc", "escape": "esc", "abort": "esc"}
+               "quit": "q", "finish": "q", "save": "q", "done": "q", "finished": "q",
+               "esc": "esc", "escape": "esc", "abort": "esc", "cancel": "esc"}
 
 
 def normalise_key(text: str) -> str | None:

@@ -10,6 +10,7 @@ script or a pipe can drive it; the end of input finishes and saves like ``q``.
 from __future__ import annotations
 
 import math
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -146,7 +147,9 @@ class Teaching:
         return TeachOutcome(None, None, self.presses, self.ignored)
 
     def run_lines(self, lines, out=None, echo=None) -> TeachOutcome:
-        """Keys one per line (``w``, ``up``, ``a 3``…); ``q`` or the end saves, ``esc`` aborts."""
+        """Keys one per line (``w``, ``up``, ``a 3``…); ``q`` ("done") or the end saves, ``esc``
+        ("cancel", "never mind") aborts; a demonstration in which the robot was not driven is not
+        saved."""
         for number, raw in enumerate(lines, 1):
             text = raw.strip()
             if not text or text.startswith("#"):
@@ -157,10 +160,14 @@ class Teaching:
                 times = int(count) if count.strip() else 1
             except ValueError:
                 times = -1
+            if key is None and len(text.split()) > 1 and re.match(r"(never ?mind|stop teaching|forget it|cancel)\b",
+                                                                  text.lower()):
+                key, times = "esc", 1  # "never mind", "cancel that": the teaching stops, nothing saved
             if key is None or times < 1:
                 self.ignored.append(text)
                 if echo:
-                    echo(f"line {number}: {text!r} is not a key; {HELP}")
+                    echo(f"line {number}: {text!r} is not a key — you are teaching me a place now; {HELP} "
+                         "(or \"done\" to save, \"cancel\" to stop)")
                 continue
             if times > MAX_KEY_REPEAT:
                 self.ignored.append(text)
@@ -169,11 +176,11 @@ class Teaching:
                          "give several lines")
                 continue
             if key == "q":
-                return self.finish(out)
+                return self.finish(out) if self.presses else self.abort()
             if key == "esc":
                 return self.abort()
             self.press(key, times)
-        return self.finish(out)
+        return self.finish(out) if self.presses else self.abort()  # not driven: nothing to save
 
     def run_curses(self, out=None) -> TeachOutcome:
         import curses

@@ -170,6 +170,8 @@ def test_more_of_what_people_say_in_other_homes(text, intent):
     ("where r u", "where are you"),
     ("thx", "thanks"), ("nvm", "never mind"), ("wat room r u in", "what room are you in"),
     ("Is my mug in the living room?", "Is my mug in the living room?"),  # nothing to write out
+    ("robot go near of the bed", "robot go near the bed"), ("the cup on table next of sofa",
+                                                            "the cup on table next to sofa"),
 ])
 def test_chat_shorthand_is_written_out(typed, meant):
     from assistant.dialogue.intents import expand_shorthand

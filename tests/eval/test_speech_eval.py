@@ -43,6 +43,8 @@ def test_sentences_and_rotation_cover_kinds_voices_rates():
     assert kinds == {"command", "where", "chat"} and sum(k == "command" for _, k, _ in said) == len(distinct)
     assert len(set(said)) == len(said)  # each sentence once
     assert not any(t.strip() in ("asdfgh", "blorp zing wibble") for t, _, _ in said)  # garbled turns left out
+    # the chat sentences are a fixed list: a scripted conversation added since is not in it
+    assert sum(k == "chat" for _, k, _ in said) == 225 and ("go to couch", "chat", "apartment") not in said
     all_items = items(snrs_db=(None,))
     assert {(i.voice, i.rate) for i in all_items} == {(v, r) for v in ("en-us", "en-us+f3", "en-us+m3", "en-us-nyc")
                                                       for r in (140, 175)}

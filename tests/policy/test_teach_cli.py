@@ -60,3 +60,19 @@ def test_eval_policy_one_rdt(capsys):
     (row,) = result["rows"]
     assert row["rdt"] == "move-front-non" and len(row["trials"]) == 2 and row["T_total"] is None
     assert result["mean_d"] == row["d_mean"] < 0.3
+
+
+def test_words_end_a_teaching_and_nothing_driven_is_not_saved(tmp_path, capsys):
+    """In a piped chat a person types words, not keys: "never mind" stops the teaching, and a
+    teaching in which the robot was not driven ("done" at once) saves nothing (it used to save
+    an empty demonstration and thank the person for it)."""
+    out = tmp_path / "demo.json"
+    code, captured = _teach_direct(["move-left-non", "--world", "training-home", "--out", str(out)],
+                                   "what should I do now?\nnever mind\n", capsys)
+    assert code == 1 and not out.exists() and "you are teaching me a place now" in captured.err
+    code, captured = _teach_direct(["move-left-non", "--world", "training-home", "--out", str(out)],
+                                   "done\n", capsys)
+    assert code == 1 and not out.exists()
+    code, captured = _teach_direct(["move-left-non", "--world", "training-home", "--out", str(out)],
+                                   "a 2\ndone\n", capsys)
+    assert code == 0 and out.exists()
