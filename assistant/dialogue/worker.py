@@ -48,6 +48,7 @@ class TaskWorker:
 
     def __init__(self, conversation):
         self.conversation = conversation
+        self.unreachable_said: set[str] = set()  # rooms already said to be out of reach
         self.job: Job | None = None
 
     @property
@@ -140,9 +141,14 @@ class TaskWorker:
                 recorder.on_event(name, data)
                 if job.kind == "search" and obj and obj in recorder.latest and obj not in announced:
                     announced.add(obj)
-                    self.speak(f"I can see your {obj}!")
+                    room = getattr(recorder.latest[obj][0], "room", None)  # seen through a door: its room
+                    self.speak(f"I can see your {obj}" + (f", in the {room}!" if room else "!"))
             job.doing = activity_phrase(name, data) or job.doing
             sentence = progress_sentence(name, data, words)
+            if name == "room_skipped":  # said once a conversation: the room will not open up
+                if data.get("room") in self.unreachable_said:
+                    sentence = None
+                self.unreachable_said.add(data.get("room"))
             if sentence:
                 self.speak(sentence)
             if job.stop.is_set():

@@ -678,6 +678,8 @@ def test_where_are_you_and_why_did_you_stop(services, tmp_path):
 
     m.pose_listener(Pose2D(5.0, -3.0, 0.0))  # reported while a task ran: in the bedroom
     assert m.handle("where r u").reply.startswith("I'm in the bedroom.")
+    here = m.handle("what is in this room?")
+    assert here.intent == "furniture" and here.data["room"] == "bedroom" and "bed" in here.reply
 
 
 def test_shorthand_and_missing_articles_and_ordinary_words(services, tmp_path):
@@ -695,3 +697,26 @@ def test_shorthand_and_missing_articles_and_ordinary_words(services, tmp_path):
     assert "mom" not in told.reply and not told.reply.startswith("I don't know")
     m.wait(10)
     assert m.handle("thx").reply == "You're welcome."
+
+
+def test_a_search_says_the_room_it_sees_the_thing_in_and_a_closed_room_once(services, tmp_path):
+    """Seen through a door, "I can see your statue!" while "looking in the office" read as a
+    contradiction of the answer: the room is said. A room the robot cannot get into is said
+    once a conversation, not at every search."""
+    import threading
+
+    from assistant.dialogue.seen import SeenRecorder
+    from assistant.dialogue.worker import Job
+    from assistant.geometry import Pose2D
+    from assistant.perception.objects import Sighting
+
+    said = []
+    m = make(services, tmp_path, StandInFetcher(), said)
+    events = m.worker._events(Job(threading.Event(), kind="search", object="statue"),
+                              SeenRecorder(m.memory, "apartment", source="search"), "statue")
+    seen = Sighting("statue", 4.0, -1.9, 0.6, distance_m=2.0, pixels=50, room="bedroom")
+    events("objects_seen", {"seen": [seen], "pose": Pose2D(3.0, 0.0, 0.0)})
+    for _ in range(2):
+        events("room_skipped", {"room": "alcove"})
+    assert "I can see your statue, in the bedroom!" in said
+    assert sum("alcove" in s for s in said) == 1
