@@ -446,7 +446,7 @@ class DialogueManager:
                 return self._where(text, Intent("where", intent.text), start)
             return self._command(text, start)
         room = self._room_in(intent.text)
-        if room is None and re.search(r"\b(this room|in here|around here|here|where you are|this one)\b", intent.text):
+        if room is None and re.search(r"\b(this room|in here|the room (you are|youre) in|where you are)\b", intent.text):
             room = self.robot_room()[0]  # "what's in this room?": the room the robot is in
         missing = unknown_room_named(intent.text.split(), self.world) if room is None else None
         if missing is not None:
