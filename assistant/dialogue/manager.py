@@ -476,6 +476,11 @@ class DialogueManager:
             names = _join(sorted(known_object_names(self.world)), "or")
             if unknown and (matching(self.world.scene(self.scene).furniture, unknown)
                             or furniture_category(singular(unknown)) is not None):
+                place = self._place_asked(text, intent, unknown, start) if intent.name == "where_dynamic" \
+                    and len({furniture_category(singular(w)) for w in intent.text.split()} - {None}) == 1 \
+                    else None  # "how do I get to the couch?": where it is, and an offer to go
+                if place is not None:
+                    return place
                 return self._turn(text, intent.name, "I look for things, not furniture — ask me \"what's in the "
                                   f"{self.rooms[-1]}?\" or \"where's the {singular(unknown)}?\", or tell me to go to "
                                   "a piece of furniture.", "answer", "answered", start)

@@ -320,6 +320,7 @@ def test_pointing_at_an_option_is_an_answer_not_a_new_request(services, tmp_path
     ("couch", "The couch is in the living room."),
     ("where are my keys and my wallet", "I haven't seen your keys"),
     ("where is the table between the chairs and the couch", "I look for things, not furniture"),
+    ("how to get to the couch", "The couch is in the living room. Shall I go to it?"),  # not "not furniture"
 ])
 def test_negations_bare_names_two_things_and_furniture_in_where_questions(services, tmp_path, said, start):
     m = make(services, tmp_path, StandInFetcher())
