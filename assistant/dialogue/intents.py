@@ -197,8 +197,12 @@ FURNITURE_QUESTIONS = (
 _THING = r"(?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!still\b|maybe\b|perhaps\b|by\b|now\b)[a-z]+)?|it|they|them)"
 _PLACE = (r"(?P<place>(?:in|on|under|by|at|near|next to|beside|behind|inside|in front of) [a-z]+(?: [a-z]+)*?"
           r"|upstairs|downstairs)(?: still| now| then| by any chance| perhaps| maybe)?$")
+_TAG = r"(?: (?:yes|right|no|isnt it|arent they|correct|yeah|true|is it|are they))$"
 WHERE_CHECKS = (
     _LEAD + r"(?:is|are) " + _THING + r" (?:still |maybe |perhaps |by any chance )?" + _PLACE,
+    # a statement with a question tag: "my monitor is in the studio, right?", "monitor is in studio, yes?"
+    _LEAD + r"(?P<thing>(?:(?:my|the|our|his|her) )?[a-z]+(?: [a-z]+)?) (?:is|are) (?:still )?"
+    + _PLACE[:-1] + _TAG,
     _LEAD + r"(?:did|have|do) (?:i|we|you|he|she) (?:leave|left|put|seen|see|keep|last see) " + _THING + r" " + _PLACE,
     _LEAD + r"(?:could|might|would|can) " + _THING + r" be " + _PLACE,
 )

@@ -27,6 +27,8 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("where are you?", "robot_place"), ("what room are you in?", "robot_place"), ("which room you are in",
      "robot_place"), ("where are you now", "robot_place"), ("why did you stop?", "why_stopped"),
     ("why you not bring?", "why_stopped"), ("repeat please", "repeat"), ("what do you mean?", "repeat"),
+    ("monitor is in studio, yes?", "where_check"), ("my keys are on the coffee table, right?", "where_check"),
+    ("the mug is in the bedroom", "command"),  # no question tag: a fetch, as the study's descriptions
     ("what are you doing", "status"), ("are you done", "status"),
     ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "wellbeing"),
     ("what's your name", "smalltalk"), ("what time is it", "out_of_scope"), ("turn on the lights", "out_of_scope"),
