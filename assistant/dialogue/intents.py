@@ -71,7 +71,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
                 r"^(pardon|sorry what|what|huh|repeat)$",
                 r"^(?:(?:please|sorry|can you|could you|robot) )*(repeat|repeat it|say again|what do you mean|what did you "
-                r"mean|what does that mean|i dont understand|i didnt understand|i didnt get that|pardon me)"
+                r"mean|what does that mean|i dont understand|i didnt understand|i didnt get that|pardon me|"
+                r"i (?:cant|can not|cannot|couldnt|didnt) hear (?:you|that|it)|speak up|louder)"
                 r"(?: please| again| that| robot)*$")),
     ("help", (r"^(help|help me|\?)$", r"\bwhat can (you|i) (do|say|ask)\b", r"\bwhat (can|could) you help (me )?with\b",
               r"\bhow (can|could) you help( me)?\b", r"\bwhat (are|is) you (for|good at)\b", r"\bhow do(es)? (this|you) work\b",
@@ -86,9 +87,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                      r"(?:which|what) room (?:are you|you are|you|are you in|you are in|you in)(?: in)?|where have you got to|"
                      r"where did you end up|where are you standing)( now| right now| robot| at the moment| exactly)*$",)),
     ("why_stopped", (r"\bwhy (?:did|have|has|do) you (?:just )?(?:stop|stopped|stopping|give up|gave up|come back)\b",
+                     r"\bwhy (?:are you|you) (?:going|driving|moving|doing that|doing this|going there|turning)\b",
                      r"\bwhy (?:are you|you) (?:not moving|stopped|stopping|standing still)\b", r"^why (?:you )?stop(?:ped)?\b",
                      r"\bwhy (?:didnt|did not|dont|do not|you not) (?:you )?(?:bring|fetch|get|find|finish|go)\b")),
-    ("status", (r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
+    ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$", r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
                 r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
                 r"( now| robot| right now)?$",)),
     ("come_here", (r"^(?:(?:no|ok|okay|oh|please|robot|hey|right|actually) )*" + ADDRESS + r"(please )?(come|come here|"
@@ -100,8 +102,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"get going again|off you go)(?: please| now| then| with (?:it|that|what you were doing)| robot)*$",)),
     ("wellbeing", (r"^" + ADDRESS + r"(how are you|how are you doing|how are things|hows it going with you|"
                    r"are you (ok|okay|alright|well))( today| robot| this morning| this evening)?$",)),
-    ("listening", (r"^" + ADDRESS + r"(are you (listening|awake|on|there|with me)|can you hear me|do you hear me)"
-                   r"( robot| now)?$",)),
+    ("listening", (r"^" + ADDRESS + r"(are you (listening|awake|on|there|with me)|can you hear me|do you hear me|"
+                   r"you there|are you still there|anybody there|hello are you there)( robot| now)?$",)),
     ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
@@ -175,6 +177,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("praise", (r"^(that is |thats |very |youre a |you are a |what a )?(good robot|good boy|good girl|nice work|nice one|"
                 r"great job|well done|good job|clever (robot|thing|little thing|boy|girl)|great|awesome|perfect|"
                 r"brilliant|excellent|wonderful|lovely|clever)( robot| thanks| thank you)*$",
+                r"^(ok |okay |oh )?(good|great|nice|cool|super|lovely|brilliant|excellent|good good)( robot| thanks| thank you)*$",
                 r"^(youre|you are) (so |very |a )?(clever|smart|good|great|helpful|brilliant)\b")),
     ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",)),
     ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),

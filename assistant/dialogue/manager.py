@@ -301,8 +301,10 @@ class DialogueManager:
         """"why did you stop?": how the last task ended, in its own words."""
         if self.busy:
             doing = self.activity
-            return self._turn(text, "why_stopped", f"I haven't stopped — I'm {doing[0] if doing else 'still at it'}.",
-                              start=start)
+            going = not re.search(r"\bstop", text.lower())  # "why are you going there?"
+            reply = (f"Because you asked me to: I'm {doing[0] if doing else 'at it'}. Say \"stop\" to stop me."
+                     if going else f"I haven't stopped — I'm {doing[0] if doing else 'still at it'}.")
+            return self._turn(text, "why_stopped", reply, start=start)
         last = next((t for t in reversed(self.history) if t.final and t.action in ("fetch", "search")), None)
         if last is None:
             return self._turn(text, "why_stopped", "I haven't been asked to do anything yet. What can I do for you?",
@@ -1067,8 +1069,10 @@ class DialogueManager:
                                      norm):
             return None
         room = next((r for r in self.rooms if m.group("room") == r), None)
-        missing = unknown_room_named(m.group("room").split(), self.world) if room is None else None
         obj = self._last_object()
+        if room is None and m.group("room") in ("other room", "other one room", "other place") and obj is not None:
+            return self._the_other_room(text, obj, start)
+        missing = unknown_room_named(m.group("room").split(), self.world) if room is None else None
         if missing is not None:
             return self._no_room(text, "command", missing, start)
         if room is None or obj is None:
@@ -1076,6 +1080,20 @@ class DialogueManager:
         if self.busy:
             self.worker.stop(quiet=True)
         return self._command(f"find the {obj} in the {room}", start, original=text)
+
+    def _the_other_room(self, text: str, obj: str, start: float) -> Turn:
+        """"no, the other room": the last request's thing in the room with tables it did not go
+        to, or the question which of them when there are several."""
+        last = next((t for t in reversed(self.history) if t.action in ("fetch", "search") and t.data.get("room")), None)
+        tried = last.data["room"] if last is not None else None
+        others = [r for r in self._rooms_with(["table"]) if r != tried]
+        if self.busy:
+            self.worker.stop(quiet=True)
+        if len(others) == 1:
+            return self._command(f"find the {obj} in the {others[0]}", start, original=text)
+        self.pending = {"kind": "room", "text": f"find the {obj}", "original": text, "object": obj}
+        return self._turn(text, "command", f"Which room, then — {_join(['the ' + r for r in others], 'or')}?",
+                          "clarify", "asked", start, missing="room")
 
     def _last_visited(self) -> dict | None:
         """The piece of furniture the last fetch went to, as a which-question among the pieces of

@@ -29,6 +29,8 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("why you not bring?", "why_stopped"), ("repeat please", "repeat"), ("what do you mean?", "repeat"),
     ("monitor is in studio, yes?", "where_check"), ("my keys are on the coffee table, right?", "where_check"),
     ("the mug is in the bedroom", "command"),  # no question tag: a fetch, as the study's descriptions
+    ("you there", "listening"), ("are you there yet", "status"), ("i cant hear you", "repeat"),
+    ("why are you going there?", "why_stopped"), ("ok good", "praise"),
     ("what are you doing", "status"), ("are you done", "status"),
     ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "wellbeing"),
     ("what's your name", "smalltalk"), ("what time is it", "out_of_scope"), ("turn on the lights", "out_of_scope"),

@@ -721,3 +721,17 @@ def test_a_search_says_the_room_it_sees_the_thing_in_and_a_closed_room_once(serv
         events("room_skipped", {"room": "alcove"})
     assert "I can see your statue, in the bedroom!" in said
     assert sum("alcove" in s for s in said) == 1
+
+
+
+def test_no_the_other_room(services, tmp_path):
+    """"no, the other room": the thing again in the one other room with tables, or which of
+    them when there are several."""
+    fetcher = StandInFetcher()
+    m = make(services, tmp_path, fetcher)
+    m.handle("find my mug in the living room")
+    m.wait(10)
+    other = m.handle("no, the other room")
+    assert other.action == "fetch" and other.reply == "Going to the bedroom."
+    m.wait(10)
+    assert "mug" in fetcher.texts[-1] and "bedroom" in fetcher.texts[-1]
