@@ -251,8 +251,9 @@ SECOND_LANGUAGE = ((r"\bnear of\b", "near"), (r"\bnext of\b", "next to"), (r"\bb
 def expand_shorthand(text: str) -> str:
     """``text`` with chat shorthand written out ("pls check bedrm 4 my keys" → "please check
     bedroom for my keys"): the words of :data:`SHORTHAND`, "2"/"4" before a determiner or a
-    place, and the prepositions of :data:`SECOND_LANGUAGE` ("near of the bed" → "near the
-    bed"). Everything else is left as typed."""
+    place, the prepositions of :data:`SECOND_LANGUAGE` ("near of the bed" → "near the
+    bed"), and a closing "and wait there" (the robot waits where a task ends). Everything else
+    is left as typed."""
     def word(m: re.Match) -> str:
         return SHORTHAND.get(m.group(0).lower(), m.group(0))
 
@@ -261,7 +262,9 @@ def expand_shorthand(text: str) -> str:
     out = re.sub(r"(?<![\w.])4" + _NUMBER_WORD_NEXT, "for", out)
     for pattern, english in SECOND_LANGUAGE:  # "go near of the bed"
         out = re.sub(pattern, english, out, flags=re.IGNORECASE)
-    return out
+    # "go to the couch and wait there": the robot waits where a task ends anyway
+    return re.sub(r"(?<=\w)[ ,]+and (?:wait|stay)(?: (?:there|here))?(?: (?:for me|please))*\s*([.!?]*)\s*$", r"\1",
+                  out, flags=re.IGNORECASE)
 
 
 def normalise(text: str) -> str:

@@ -174,6 +174,7 @@ def test_more_of_what_people_say_in_other_homes(text, intent):
     ("where r u", "where are you"),
     ("thx", "thanks"), ("nvm", "never mind"), ("wat room r u in", "what room are you in"),
     ("Is my mug in the living room?", "Is my mug in the living room?"),  # nothing to write out
+    ("go to the couch and wait there", "go to the couch"), ("go to the bed and stay there please.", "go to the bed."),
     ("robot go near of the bed", "robot go near the bed"), ("the cup on table next of sofa",
                                                             "the cup on table next to sofa"),
 ])
