@@ -90,6 +90,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                      r"\bwhy (?:are you|you) (?:going|driving|moving|doing that|doing this|going there|turning)\b",
                      r"\bwhy (?:are you|you) (?:not moving|stopped|stopping|standing still)\b", r"^why (?:you )?stop(?:ped)?\b",
                      r"\bwhy (?:didnt|did not|dont|do not|you not) (?:you )?(?:bring|fetch|get|find|finish|go)\b")),
+    ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can|did) you see(?: now| there| here| robot)*$",
+                  r"^" + ADDRESS + r"(?:so |and |now )?what is (?:near|around|next to|in front of|close to) you(?: now)?$",
+                  r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$")),
     ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$", r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
                 r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
                 r"( now| robot| right now)?$",)),
@@ -169,7 +172,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
              r"yes please|go and check|check|sure thing)$",
              # said together: "sure, go ahead", "yes please do", "ok go and get it"
              r"^(yes|yeah|yep|yup|sure|ok|okay|alright|please|of course)( (yes|please|sure|go ahead|do it|please do|"
-             r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not))+$")),
+             r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not))+$",
+             # "cool go there", "you go there now please", "ok go on then"
+             r"^(?:(?:ok|okay|cool|great|good|yes|yeah|sure|alright|fine|then|please|you|now|so) )*(?:go there|go "
+             r"over there|go on then|go on|go for it|off you go)(?: now| please| then| robot)*$")),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",
             r"^(no|nope|nah|not|not now|not right now|not yet|maybe later|later|no need|its fine|its ok|"
             r"(no )?(just )?leave (it|them)( there| be| alone)?)( thanks| thank you| robot| then| for now)*$")),
@@ -329,7 +335,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise", "told", "on_furniture", "robot_place", "why_stopped"})
+                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -230,6 +230,8 @@ class DialogueManager:
             turn = self._resolve(text, intent, start)
             if turn is not None:
                 return turn
+        if name == "yes" and re.search(r"\bthere\b", intent.text) and (last := self._last_object()) is not None:
+            return self._command(f"bring me the {last}", start, original=text)  # "go there": to the thing talked of
         if name in ("yes", "no"):
             return self._turn(text, name, "OK." if name == "no" else
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
@@ -241,6 +243,8 @@ class DialogueManager:
             return self._robot_place(text, start)
         if name == "why_stopped":
             return self._why_stopped(text, start)
+        if name == "what_see":
+            return self._what_see(text, start)
         if name == "status":
             doing = self.activity
             return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
@@ -296,6 +300,19 @@ class DialogueManager:
         else:
             reply = f"{where}{'' if moved else ', where I started'}. What can I do for you?"
         return self._turn(text, "robot_place", reply, start=start, room=room)
+
+    def _what_see(self, text: str, start: float) -> Turn:
+        """"what do you see?", "what is near you?": the room the robot is in, its furniture, and
+        the things last seen there."""
+        room, _ = self.robot_room()
+        if room is None:
+            return self._turn(text, "what_see", "I'm between rooms just now. Ask me what's in a room, for example "
+                              f"\"what's in the {self.rooms[-1]}?\"", start=start)
+        furniture = furniture_answer(self.world.scene(self.scene).furniture, self.rooms, "list", "", room)
+        things = [s for s in self.memory.sightings(self.world.name) if s.room == room and s.source != "told"]
+        seen = (f" Of your things, I last saw {_join([f'your {s.object}' for s in things])} here." if things
+                else " I haven't seen any of your things here.")
+        return self._turn(text, "what_see", f"I'm in the {room}. {furniture}{seen}", start=start, room=room)
 
     def _why_stopped(self, text: str, start: float) -> Turn:
         """"why did you stop?": how the last task ended, in its own words."""
@@ -469,7 +486,8 @@ class DialogueManager:
         obj, unknown = self._object_in(intent.text)
         if obj is None and unknown is None:
             obj = self._last_object()  # "where did you see it?", "how do I get there?", "where exactly?"
-        if obj is None and unknown and re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text):
+        if obj is None and unknown and (re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text)
+                                        or unknown in {w for r in self.rooms for w in r.split()}):
             # "where is the bedroom?", "where's the couch?": a place, not a thing
             place = self._place_asked(text, intent, unknown, start)
             if place is not None:

@@ -31,6 +31,7 @@ from assistant.dialogue.intents import classify, normalise, ordinal_choice, teac
     ("the mug is in the bedroom", "command"),  # no question tag: a fetch, as the study's descriptions
     ("you there", "listening"), ("are you there yet", "status"), ("i cant hear you", "repeat"),
     ("why are you going there?", "why_stopped"), ("ok good", "praise"),
+    ("what do you see?", "what_see"), ("what is near you?", "what_see"), ("cool go there", "yes"),
     ("what are you doing", "status"), ("are you done", "status"),
     ("come here please", "come_here"), ("follow me", "come_here"), ("how are you today", "wellbeing"),
     ("what's your name", "smalltalk"), ("what time is it", "out_of_scope"), ("turn on the lights", "out_of_scope"),

@@ -735,3 +735,25 @@ def test_no_the_other_room(services, tmp_path):
     assert other.action == "fetch" and other.reply == "Going to the bedroom."
     m.wait(10)
     assert "mug" in fetcher.texts[-1] and "bedroom" in fetcher.texts[-1]
+
+
+
+def test_what_do_you_see_go_there_and_the_way_to_a_room(services, tmp_path):
+    """"what do you see?" is the robot's room, its furniture and the things last seen there;
+    "cool go there" after a where-answer goes for the thing; "how do I get to the bedroom from
+    here?" is about the room (was "I don't know what a bedroom is")."""
+    from assistant.geometry import Pose2D
+
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    m.pose_listener(Pose2D(5.0, -3.0, 0.0))
+    seen = m.handle("what do you see?")
+    assert seen.intent == "what_see" and seen.reply.startswith("I'm in the bedroom. In the bedroom I know of")
+    assert "your mug" in seen.reply
+    assert m.handle("where is my mug").reply.startswith("I saw your mug")
+    go = m.handle("cool go there")
+    assert go.action == "fetch" and go.data["object"] == "mug"
+    m.wait(10)
+    way = m.handle("how do I get to the bedroom from here?")
+    assert way.reply.startswith("The bedroom is one of the rooms here")
