@@ -25,6 +25,12 @@ TOLD_PLACES = (
     r"keep in mind|dont forget|do not forget)(?: that)?(?: i (?:have |ve )?(?:put|left|placed))? (?P<thing>(?:my|the|our|his|"
     r"her) [a-z]+(?: (?!is\b|are\b|now\b|usually\b|always\b|normally\b)[a-z]+)?) (?:(?:is|are) "
     r"(?:now |usually |always |normally |mostly )?)?(?P<place>" + _PLACE_WORDS + r" [a-z ]+)$",
+    # a habit said as a statement: "my keys are always on the coffee table", "my phone lives on the bed"
+    r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|just to let you know|actually|also) )*"
+    r"(?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!is\b|are\b|usually\b|always\b|normally\b|lives\b|live\b|"
+    r"stays\b|stay\b|sits\b|sit\b|belongs\b|belong\b|goes\b|go\b)[a-z]+)?) (?:(?:is|are) (?:usually|always|normally|"
+    r"mostly|generally|kept)|(?:usually |always |normally )?(?:lives?|stays?|sits?|belongs?|goes|go|are kept|is kept))"
+    r" (?P<place>" + _PLACE_WORDS + r" [a-z ]+?)(?: usually| always| normally| most of the time)?$",
     r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|actually|no|sorry) )*(?:i|ive|i have|weve|we have|we) "
     r"(?:just )?(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!(?:next|on|in|under|by|"
     r"at|near|beside|behind|inside|to|onto|into|back)\b)[a-z]+)?|it|them) "
@@ -93,7 +99,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can|did) you see(?: now| there| here| robot)*$",
                   r"^" + ADDRESS + r"(?:so |and |now )?what is (?:near|around|next to|in front of|close to) you(?: now)?$",
                   r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$")),
-    ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$", r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
+    ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$",
+                r"^" + ADDRESS + r"(?:so |and )?(?:where are you (?:going|headed|heading|off to)|how long will (?:it|that|you) "
+                r"(?:take|be)|are you nearly (?:there|done))(?: now| robot)?$", r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
                 r"ready|there|still going)|how is it going|hows it going|status|whats happening|what is happening)"
                 r"( now| robot| right now)?$",)),
     ("come_here", (r"^(?:(?:no|ok|okay|oh|please|robot|hey|right|actually) )*" + ADDRESS + r"(please )?(come|come here|"
@@ -117,7 +125,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                       r"\b(call|phone|ring|text|email|message|video call) (my|the|someone|somebody|a|an|him|her|them)\b",
                       r"\b(make|cook|get|bring|fix) (me |us )?(a |some )?(cup of |mug of )?(tea|coffee|dinner|lunch|"
                       r"breakfast|food|a sandwich|something to eat|a drink)\b",
-                      r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b")),
+                      r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b",
+                      r"\b(battery|batteries|charge level|charged|charging|power level)\b")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
                    r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
                    r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",
@@ -166,7 +175,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"^(?:and|what about|how about|and what about) (my|the|our|his|her) [a-z]+(?: [a-z]+)?$",
                r"^(?:(?:and|so|ok|okay|but) )*which (table|room|one)$", r"^(?:(?:and|so|ok|okay|but) )*(where|which (room|table|one|place)) "
                r"(exactly|precisely|then)$")),
-    ("bye", (r"^(ok |okay |thanks |thank you )?(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
+    ("bye", (r"^(ok |okay |thanks |thank you |no problem |no problem thanks |cheers )*(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
              r"thats all|that is all|im done|i am done)( now| then| for now| robot| brian| later)*$",)),
     ("yes", (r"^(yes|yeah|yep|yup|sure|ok|okay|please do|do it|go ahead|please|go|y|of course|correct|right|"
              r"yes please|go and check|check|sure thing)$",
@@ -238,7 +247,7 @@ SHORTHAND = {
     "u": "you", "r": "are", "ur": "your", "pls": "please", "plz": "please", "plez": "please", "pleez": "please",
     "thx": "thanks", "thnx": "thanks", "tnx": "thanks", "ty": "thank you", "tysm": "thank you", "thanx": "thanks",
     "nvm": "never mind", "nevermind": "never mind", "wat": "what", "wot": "what", "wht": "what", "k": "ok",
-    "kk": "ok", "okey": "okay", "im": "I'm", "pls.": "please", "b4": "before", "rn": "right now", "cud": "could",
+    "kk": "ok", "okey": "okay", "np": "no problem", "cya": "see you", "gn": "good night", "im": "I'm", "pls.": "please", "b4": "before", "rn": "right now", "cud": "could",
     "wud": "would", "cn": "can", "abt": "about", "bc": "because", "tmrw": "tomorrow", "thru": "through",
     "bedrm": "bedroom", "livingroom": "living room", "lvngroom": "living room", "diningroom": "dining room",
     "bathrm": "bathroom", "kitchn": "kitchen", "rm": "room", "frnt": "front", "nxt": "next", "tbl": "table",

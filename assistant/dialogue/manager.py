@@ -271,6 +271,9 @@ class DialogueManager:
             if self.stop():
                 return self._turn(text, name, "OK, I won't — stopping.", "stop", "stopped", start)
             return self._turn(text, name, "OK, I won't.", start=start)
+        thing = self._other_thing(text, intent.text, start)
+        if thing is not None:
+            return thing
         other = self._other_one(text, intent.text, start)
         if other is not None:
             return other
@@ -330,7 +333,8 @@ class DialogueManager:
             reply = "You asked me to stop. Say \"carry on\" and I'll go on."
         elif last.outcome == "success":
             done = re.sub(r"^Done\s*[—-]\s*", "", last.reply)
-            reply = f"I'd done what you asked: {done[0].lower() + done[1:]}"
+            done = done if done.startswith(("I ", "I'")) else done[0].lower() + done[1:]
+            reply = f"I'd done what you asked: {done}"
         else:
             reply = f"I couldn't go on: {last.reply[0].lower() + last.reply[1:]}"
         return self._turn(text, "why_stopped", reply, start=start)
@@ -1099,6 +1103,26 @@ class DialogueManager:
             self.worker.stop(quiet=True)
         return self._command(f"find the {obj} in the {room}", start, original=text)
 
+    def _other_thing(self, text: str, norm: str, start: float) -> Turn | None:
+        """"no, not the mug — the glasses case": the last request again for the thing now named
+        (a where-question stays one, a fetch a fetch); None when the words are not such a
+        correction or the thing is not one the robot knows."""
+        m = re.match(r"^(?:(?:no|nope|sorry|oh|wait) )*not (?:the |my |that |this )?(?P<wrong>[a-z]+(?: [a-z]+)?) "
+                     r"(?:but )?(?:i (?:meant|mean|said) |its |it is |i want |i need )?(?:the |my )(?P<right>[a-z]+(?: [a-z]+)?)"
+                     r"(?: please| instead)*$", norm)
+        if m is None:
+            return None
+        right = self._object_in(m.group("right"))[0]
+        if right is None:
+            return None
+        if self.busy:
+            self.worker.stop(quiet=True)
+        last = next((t for t in reversed(self.history) if t.intent in ("where", "where_dynamic", "command", "want")
+                     and t.action in ("answer", "search", "fetch", "clarify")), None)
+        if last is not None and last.intent.startswith("where"):
+            return self._where(text, Intent("where", f"where is the {right}"), start)
+        return self._command(f"bring me the {right}", start, original=text)
+
     def _the_other_room(self, text: str, obj: str, start: float) -> Turn:
         """"no, the other room": the last request's thing in the room with tables it did not go
         to, or the question which of them when there are several."""
@@ -1156,5 +1180,5 @@ class DialogueManager:
         object) in the worker; its final :class:`Turn` comes through ``say``/``on_finish``."""
         turn = self._turn(said, intent_name, reply, kind, "started", start, **data)
         turn.final = False
-        self.worker.start(kind, text, task_room, task_object, style)
+        self.worker.start(kind, text, task_room, task_object, style, said=said)
         return turn

@@ -67,6 +67,10 @@ def related_seen(name: str, seen) -> str | None:
     return None
 
 
+#: words asking for a thing to be carried to the person ("bring me", "fetch", "get me")
+CARRY_WORDS = r"\b(bring|fetch|grab|carry|hand)\b|\bget me\b"
+
+
 def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: float, summary: dict | None = None,
                 before=None) -> tuple[Turn, dict | None]:
     """The final turn of a fetch (a ``fetch`` :class:`~assistant.app.Result`) and the question
@@ -115,7 +119,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
         moved = obj in summary["moved"] or (
             before is not None and place is None and before.furniture != (item.id if item else None))
         carry = (f" I can't carry {it_them(obj)} to you — I have no arm — but I'm right by {it_them(obj)}."
-                 if re.search(r"\b(bring|fetch|grab|carry|hand)\b|\bget me\b", text.lower()) else "")
+                 if re.search(CARRY_WORDS, text.lower()) else "")
         reply = f"Here {'they are' if it_them(obj) == 'them' else 'it is'}: I can see your {obj} {where}." + carry + (
             " It wasn't where I saw it last; I've updated my memory." if moved else "")
         data["remembered"] = True

@@ -10,13 +10,14 @@ task ends ``stopped``.
 
 from __future__ import annotations
 
+import re
 import threading
 import time
 from dataclasses import dataclass
 
 from assistant.app import Status, Stopped
 from assistant.dialogue.clarify import activity_phrase, progress_sentence
-from assistant.dialogue.replies import ReplyContext, fetch_reply, search_reply
+from assistant.dialogue.replies import CARRY_WORDS, ReplyContext, fetch_reply, search_reply
 from assistant.dialogue.seen import SeenRecorder
 from assistant.dialogue.turns import Turn
 
@@ -39,6 +40,7 @@ class Job:
     #: what started it (``TaskWorker.start``'s arguments), so a stopped task can be carried on
     args: tuple = ()
     what: str = ""  # what it set out to do ("fetching the mug"), said when it is carried on
+    said: str = ""  # the person's words that asked for it ("can you bring it to me?")
 
 
 class TaskWorker:
@@ -102,12 +104,15 @@ class TaskWorker:
             self.job.stop.set()
             self.job.thread.join(timeout)
 
-    def start(self, kind: str, text: str, room: str | None, obj: str | None, style: str = "static") -> None:
-        """Run a fetch (``text``: the command) or a search (``text``: the object) in a thread."""
+    def start(self, kind: str, text: str, room: str | None, obj: str | None, style: str = "static",
+              said: str = "") -> None:
+        """Run a fetch (``text``: the command) or a search (``text``: the object) in a thread;
+        ``said``: the person's own words that asked for it."""
         previous = self.job
         doing = f"looking for your {text}" if kind == "search" else (f"fetching the {obj}" if obj else "on my way")
         job = Job(threading.Event(), kind=kind, doing=doing, started=time.monotonic(),
-                  object=text if kind == "search" else obj, args=(kind, text, room, obj, style), what=doing)
+                  object=text if kind == "search" else obj, args=(kind, text, room, obj, style), what=doing,
+                  said=said)
         job.thread = threading.Thread(target=self._run, args=(job, previous, text, room, obj, style),
                                       name=f"assistant-{kind}", daemon=True)
         self.job = job
@@ -205,6 +210,9 @@ class TaskWorker:
             if job.kind == "search":
                 return search_reply(ctx, text, result, summary, start)
             turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before)
+            if job.said and not re.search(CARRY_WORDS, job.said.lower()):  # "take me to it": nothing to carry
+                turn.reply = re.sub(r" I can't carry (?:it|them) to you — I have no arm — but I'm right by (?:it|them)\.",
+                                    "", turn.reply)
             if pending is not None:
                 c.pending = pending
             return turn

@@ -757,3 +757,19 @@ def test_what_do_you_see_go_there_and_the_way_to_a_room(services, tmp_path):
     m.wait(10)
     way = m.handle("how do I get to the bedroom from here?")
     assert way.reply.startswith("The bedroom is one of the rooms here")
+
+
+def test_no_arm_is_said_to_bring_requests_only_and_a_thing_corrected(services, tmp_path):
+    """"bring me the mug" found: the robot says it cannot carry it; "take me to it": not (it
+    was said at every fetch). "no not the mug, the glasses case": the request again for the
+    glasses case."""
+    said = []
+    m = make(services, tmp_path, StandInFetcher(), said)
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    assert "I have no arm" in said[-1]
+    m.handle("take me to it")
+    m.wait(10)
+    assert said[-1].startswith("Here it is") and "no arm" not in said[-1]
+    fixed = m.handle("no not the mug, the glasses case")
+    assert fixed.data.get("object") == "glasses case" or "glasses case" in fixed.reply
