@@ -96,7 +96,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                      r"\bwhy (?:are you|you) (?:going|driving|moving|doing that|doing this|going there|turning)\b",
                      r"\bwhy (?:are you|you) (?:not moving|stopped|stopping|standing still)\b", r"^why (?:you )?stop(?:ped)?\b",
                      r"\bwhy (?:didnt|did not|dont|do not|you not) (?:you )?(?:bring|fetch|get|find|finish|go)\b")),
-    ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can|did) you see(?: now| there| here| robot)*$",
+    ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can) you see(?: now| there| here| robot)*$",
                   r"^" + ADDRESS + r"(?:so |and |now )?what is (?:near|around|next to|in front of|close to) you(?: now)?$",
                   r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$")),
     ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$",
