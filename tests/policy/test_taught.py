@@ -78,7 +78,8 @@ def test_an_outlier_is_held_back_until_accepted(data, monkeypatch, capsys):
 
 def test_huge_key_repeats_and_folder_outputs_are_refused(data, monkeypatch, capsys, tmp_path):
     code, out = _teach(TEACH + ["--json"], "w 100000000000\nq\n", monkeypatch, capsys)
-    assert code == 0 and "at most" in out.err and json.loads(out.out)["presses"] == 0
+    # refused, so the robot was never driven: nothing is saved (3 Dec: an undriven teaching saves nothing)
+    assert code == 1 and "at most" in out.err and json.loads(out.out)["presses"] == 0
     for bad in (f"{tmp_path}/", str(tmp_path)):
         code, out = _teach(TEACH + ["--out", bad], "q\n", monkeypatch, capsys)
         assert code == 2 and "is a folder" in out.err
