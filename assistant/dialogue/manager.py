@@ -518,7 +518,9 @@ class DialogueManager:
         seen = self.memory.recall(self.world.name, obj)
         if seen is not None and style == "static":
             said = self._seen_at(obj, seen)
-            reply = f"{said[:1].upper()}{said[1:]}. Shall I go and check?"
+            here = seen.room is not None and not self.busy and self.robot_room()[0] == seen.room
+            offer = "It's in this room — shall I go over to it?" if here else "Shall I go and check?"
+            reply = f"{said[:1].upper()}{said[1:]}. {offer}"
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,

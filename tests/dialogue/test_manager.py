@@ -773,3 +773,16 @@ def test_no_arm_is_said_to_bring_requests_only_and_a_thing_corrected(services, t
     assert said[-1].startswith("Here it is") and "no arm" not in said[-1]
     fixed = m.handle("no not the mug, the glasses case")
     assert fixed.data.get("object") == "glasses case" or "glasses case" in fixed.reply
+
+
+def test_a_thing_remembered_in_the_room_the_robot_is_in_is_said_to_be_here(services, tmp_path):
+    """"Shall I go and check?" was offered for a thing in the very room the robot stood in."""
+    from assistant.geometry import Pose2D
+
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    m.pose_listener(Pose2D(5.0, -3.0, 0.0))  # in the bedroom
+    assert m.handle("where is my mug?").reply.endswith("It's in this room — shall I go over to it?")
+    m.pose_listener(Pose2D(4.5, 3.0, 0.0))  # in the living room
+    assert m.handle("where is my mug?").reply.endswith("Shall I go and check?")
