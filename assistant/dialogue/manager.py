@@ -70,6 +70,11 @@ def _pointed(word: str, options: list[dict]) -> list[str]:
     return [re.sub(rf"^on the {re.escape(word)} ", "the one ", o["phrase"]) for o in options]
 
 
+def _in_sentence(reply: str) -> str:
+    """A reply of the robot's quoted inside a sentence: its first letter small, but "I" stays."""
+    return reply if reply.startswith(("I ", "I'")) else reply[:1].lower() + reply[1:]
+
+
 def _seen_place(seen) -> str:
     """Where a remembered sighting was, said after the thing: " on the table by the chair in the bedroom"."""
     place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
@@ -125,12 +130,17 @@ class DialogueManager:
         return self.worker.activity
 
     @functools.cached_property
+    def _room_words(self) -> frozenset[str]:
+        """The words of this home's room names ("inner" and "hall" of "the inner hall")."""
+        return frozenset(w for r in self.rooms for w in r.split())
+
+    @functools.cached_property
     def _place_heads(self) -> frozenset[str]:
         """Words that name a place here: the rooms' words, furniture words (any home's: "sofa",
         "nightstand") and words that describe furniture ("blue", "coffee", "round")."""
         from assistant.grounding.vocabulary import DESCRIPTORS
 
-        rooms = {w for r in self.rooms for w in r.split() if len(w) > 2}
+        rooms = {w for w in self._room_words if len(w) > 2}
         models = {w for f in self.world.scene(self.scene).furniture for w in f.model.split()}
         return frozenset(rooms | set(FURNITURE_WORDS) | set(DESCRIPTORS) | models)
 
@@ -333,8 +343,7 @@ class DialogueManager:
             reply = "You asked me to stop. Say \"carry on\" and I'll go on."
         elif last.outcome == "success":
             done = re.sub(r"^Done\s*[—-]\s*", "", last.reply)
-            done = done if done.startswith(("I ", "I'")) else done[0].lower() + done[1:]
-            reply = f"I'd done what you asked: {done}"
+            reply = f"I'd done what you asked: {_in_sentence(done)}"
         else:
             reply = f"I couldn't go on: {last.reply[0].lower() + last.reply[1:]}"
         return self._turn(text, "why_stopped", reply, start=start)
@@ -491,7 +500,7 @@ class DialogueManager:
         if obj is None and unknown is None:
             obj = self._last_object()  # "where did you see it?", "how do I get there?", "where exactly?"
         if obj is None and unknown and (re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text)
-                                        or unknown in {w for r in self.rooms for w in r.split()}):
+                                        or unknown in self._room_words):
             # "where is the bedroom?", "where's the couch?": a place, not a thing
             place = self._place_asked(text, intent, unknown, start)
             if place is not None:
@@ -785,7 +794,7 @@ class DialogueManager:
         # a landmark that is neither furniture nor a thing the robot knows ("by the wardrobe"): ask
         nouns += [r for n in plan.nodes for r, _ in n.pairs if r not in FURNITURE_WORDS.values()
                   and r not in STRUCTURE_REFERENCES and not is_object_word(r) and r not in nouns]
-        room_words = {w for r in self.rooms for w in r.split()}
+        room_words = self._room_words
         if plan.room is None:  # the parser missed a room the words name ("go to the bedroom")
             named = [r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text.lower())]
             if len(named) == 1:

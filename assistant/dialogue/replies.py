@@ -72,10 +72,12 @@ CARRY_WORDS = r"\b(bring|fetch|grab|carry|hand)\b|\bget me\b"
 
 
 def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: float, summary: dict | None = None,
-                before=None) -> tuple[Turn, dict | None]:
+                before=None, said: str = "") -> tuple[Turn, dict | None]:
     """The final turn of a fetch (a ``fetch`` :class:`~assistant.app.Result`) and the question
     it leaves pending (None, or an offer to search). ``summary``: what the task saw (memory's
-    summary); ``before``: the memory's entry for the object before the fetch."""
+    summary); ``before``: the memory's entry for the object before the fetch; ``said``: the
+    person's own words that asked for it (the command when empty), which decide whether "I have
+    no arm" is said."""
     pending = None
     obj = obj or result.object
     summary = summary or {"seen": [], "moved": [], "places": {}}
@@ -119,7 +121,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
         moved = obj in summary["moved"] or (
             before is not None and place is None and before.furniture != (item.id if item else None))
         carry = (f" I can't carry {it_them(obj)} to you — I have no arm — but I'm right by {it_them(obj)}."
-                 if re.search(CARRY_WORDS, text.lower()) else "")
+                 if re.search(CARRY_WORDS, (said or text).lower()) else "")  # "take me to it": nothing to carry
         reply = f"Here {'they are' if it_them(obj) == 'them' else 'it is'}: I can see your {obj} {where}." + carry + (
             " It wasn't where I saw it last; I've updated my memory." if moved else "")
         data["remembered"] = True

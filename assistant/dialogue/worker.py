@@ -10,14 +10,13 @@ task ends ``stopped``.
 
 from __future__ import annotations
 
-import re
 import threading
 import time
 from dataclasses import dataclass
 
 from assistant.app import Status, Stopped
 from assistant.dialogue.clarify import activity_phrase, progress_sentence
-from assistant.dialogue.replies import CARRY_WORDS, ReplyContext, fetch_reply, search_reply
+from assistant.dialogue.replies import ReplyContext, fetch_reply, search_reply
 from assistant.dialogue.seen import SeenRecorder
 from assistant.dialogue.turns import Turn
 
@@ -209,10 +208,7 @@ class TaskWorker:
             ctx = ReplyContext(c.world, c.scene, c.memory, c.services)
             if job.kind == "search":
                 return search_reply(ctx, text, result, summary, start)
-            turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before)
-            if job.said and not re.search(CARRY_WORDS, job.said.lower()):  # "take me to it": nothing to carry
-                turn.reply = re.sub(r" I can't carry (?:it|them) to you — I have no arm — but I'm right by (?:it|them)\.",
-                                    "", turn.reply)
+            turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before, said=job.said)
             if pending is not None:
                 c.pending = pending
             return turn

@@ -292,14 +292,15 @@ class FetchTask:
         before = self.ctx.seen.get(name)
         self._observe_here()
         now = self.ctx.seen.get(name)
+        seen_on = self._seen_on(name, room, target)
         if (now is not before or before is not None and before.furniture_id == target.id) and (
-                now.furniture_id in (None, target.id) or not self._seen_on(name, room, target)):
+                now.furniture_id in (None, target.id) or not seen_on):
             return None  # seen from here on the target (or on nothing the robot has mapped)
         pose = self.ctx.pose()
         others = [e for e in self.chooser.likely_surfaces(room, wanted, pose, self._said) if e.id != target.id]
         if (found := self._look_where_seen(name, room, target)) is not None:
             return found
-        for other in self._seen_on(name, room, target) + nearest_first(others, pose)[:self.max_other_surfaces]:
+        for other in seen_on + nearest_first(others, pose)[:self.max_other_surfaces]:
             before = self.ctx.seen.get(name)
             if not self._face(other).success:
                 continue
