@@ -345,7 +345,7 @@ class DialogueManager:
             done = re.sub(r"^Done\s*[—-]\s*", "", last.reply)
             reply = f"I'd done what you asked: {_in_sentence(done)}"
         else:
-            reply = f"I couldn't go on: {last.reply[0].lower() + last.reply[1:]}"
+            reply = f"I couldn't go on: {_in_sentence(last.reply)}"  # "… i'm at the table" was lowercased
         return self._turn(text, "why_stopped", reply, start=start)
 
     # ------------------------------------------------------------------ stop / wait

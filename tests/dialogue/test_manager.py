@@ -786,3 +786,12 @@ def test_a_thing_remembered_in_the_room_the_robot_is_in_is_said_to_be_here(servi
     assert m.handle("where is my mug?").reply.endswith("It's in this room — shall I go over to it?")
     m.pose_listener(Pose2D(4.5, 3.0, 0.0))  # in the living room
     assert m.handle("where is my mug?").reply.endswith("Shall I go and check?")
+
+
+
+def test_why_did_you_stop_after_a_failure_keeps_its_capital_i(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(seen=False))
+    m.handle("bring me the mug from the table by the chair in the bedroom")
+    m.wait(10)
+    reply = m.handle("why did you stop?").reply
+    assert reply.startswith("I couldn't go on: ") and "i'm" not in reply
