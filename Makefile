@@ -16,8 +16,10 @@ run: setup warm-up
 warm-up: setup
 	$(VENV)/bin/assistant warm-up --world apartment
 
+# the tests run on every core (pytest-xdist, one test file per worker at a time); the workers
+# share one private model cache, and a model is trained by the first worker that needs it
 test: setup
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n logical --dist loadfile
 
 # JupyterLab on the notebooks, listening on 127.0.0.1 only; it prints the URL with its token
 # (as root, e.g. in a container, JupyterLab needs --allow-root).

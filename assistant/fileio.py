@@ -25,6 +25,9 @@ PRIVATE_FILE_MODE = 0o600
 PRIVATE_DIR_MODE = 0o700
 #: how long a session waits for another one's lock on a shared file (seconds)
 LOCK_TIMEOUT_S = 15.0
+#: how long a process waits for another one that is training the model it needs (seconds; the
+#: longest first-use training, the furniture views and classifiers, takes about 2 minutes)
+TRAINING_LOCK_TIMEOUT_S = 900.0
 
 
 class FileBusyError(AssistantError):
@@ -198,6 +201,30 @@ def write_cache(path: str | os.PathLike[str], obj) -> Path:
     private_dir(Path(path).parent)
     return atomic_write_bytes(path, pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL),
                               mode=PRIVATE_FILE_MODE)
+
+
+def cached(path: str | os.PathLike[str], make, expected: type | tuple[type, ...] | None = None, *,
+           read=None, write=None, use_cache: bool = True):
+    """The model cached at ``path``, else ``make()`` written there — made by one process at a
+    time: a second process (a notebook beside the chat, a second test worker) that needs the
+    same model while the first trains it waits on the file's lock (up to
+    :data:`TRAINING_LOCK_TIMEOUT_S`) and reads what the first wrote instead of training it too.
+
+    ``read(path)`` gives the object or None (default :func:`read_cache` with ``expected``);
+    ``write(path, obj)`` stores it atomically (default :func:`write_cache`). ``use_cache``
+    False makes it afresh and writes nothing."""
+    if not use_cache:
+        return make()
+    read = read or (lambda where: read_cache(where, expected))
+    write = write or write_cache
+    if (obj := read(path)) is not None:
+        return obj
+    with file_lock(path, timeout_s=TRAINING_LOCK_TIMEOUT_S):
+        if (obj := read(path)) is not None:  # made by another process while this one waited
+            return obj
+        obj = make()
+        write(path, obj)
+    return obj
 
 
 def read_yaml(text: str):

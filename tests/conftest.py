@@ -16,9 +16,16 @@ SHARED = Path(__file__).resolve().parents[1].parent / "shared"
 
 @pytest.fixture(scope="session", autouse=True)
 def _private_cache(tmp_path_factory):
-    """Tests train into their own cache so they never read a developer's stale models."""
+    """Tests train into their own cache so they never read a developer's stale models. The
+    workers of a parallel run (``pytest -n``, as ``make test`` runs) share one: a model is
+    trained by the first worker that needs it while the others wait (``fileio.cached``)."""
     if "ASSISTANT_CACHE" not in os.environ:
-        os.environ["ASSISTANT_CACHE"] = str(tmp_path_factory.mktemp("cache"))
+        base = tmp_path_factory.getbasetemp()
+        if os.environ.get("PYTEST_XDIST_WORKER"):
+            base = base.parent  # the run's folder, above each worker's own
+        cache = base / "model-cache"
+        cache.mkdir(mode=0o700, exist_ok=True)
+        os.environ["ASSISTANT_CACHE"] = str(cache)
     yield
 
 

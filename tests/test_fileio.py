@@ -7,8 +7,8 @@ import sys
 
 import pytest
 
-from assistant.fileio import (FileBusyError, atomic_write_text, file_lock, insecure_cache_reason, read_cache,
-                              write_cache)
+from assistant.fileio import (FileBusyError, atomic_write_text, cached, file_lock, insecure_cache_reason,
+                              read_cache, write_cache)
 
 
 def test_atomic_write_replaces_whole_file_with_the_usual_mode(tmp_path):
@@ -74,3 +74,23 @@ def test_file_lock_serialises_and_times_out_with_a_clear_message(tmp_path):
         holder.wait()
     with file_lock(target, timeout_s=5):  # the lock of a killed holder is free
         pass
+
+
+def test_two_processes_needing_one_model_train_it_once(tmp_path):
+    """The second process waits for the first one's training and reads its model."""
+    path, log = tmp_path / "cache" / "model.pickle", tmp_path / "trained.log"
+    script = (
+        "import os, sys, time\nfrom assistant.fileio import cached\n"
+        "def train():\n"
+        f"    open({str(log)!r}, 'a').write(f'{{os.getpid()}}\\n')\n"
+        "    time.sleep(1.0)\n    return {'weights': [4, 2]}\n"
+        f"print(cached({str(path)!r}, train, dict))\n")
+    workers = [subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+               for _ in range(2)]
+    outputs = [w.communicate(timeout=60)[0].strip() for w in workers]
+    assert outputs == ["{'weights': [4, 2]}"] * 2
+    assert len(log.read_text().split()) == 1  # trained by one of them only
+    assert cached(path, lambda: {"weights": "again"}, dict) == {"weights": [4, 2]}
+    assert cached(path, lambda: {"fresh": 1}, dict, use_cache=False) == {"fresh": 1}
+    path.write_bytes(b"damaged")  # a damaged cache is made again and rewritten
+    assert cached(path, lambda: {"weights": [5]}, dict) == {"weights": [5]} == read_cache(path, dict)

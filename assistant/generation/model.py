@@ -286,7 +286,7 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
 
     Only one XML file and one CSV file are paired by description number; with several, each
     XML file is paired with the CSV whose name shares its stem, else the first CSV."""
-    from assistant.fileio import cache_dir, read_cache, write_cache
+    from assistant.fileio import cache_dir, cached
 
     xmls, csvs = corpus_files(corpus_paths)
     digest = hashlib.sha256(f"generation-v{MODEL_VERSION}".encode())
@@ -294,8 +294,11 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
         digest.update(p.name.encode())
         digest.update(p.read_bytes())
     path = cache_dir() / f"generation-{digest.hexdigest()[:16]}.pkl"
-    if use_cache and (model := read_cache(path, GenerationModel)) is not None:
-        return model
+    return cached(path, lambda: _fit(xmls, csvs), GenerationModel, use_cache=use_cache)
+
+
+def _fit(xmls: list[Path], csvs: list[Path]) -> GenerationModel:
+    """The generation model fitted on the paired corpus files (see :func:`train_generation`)."""
     from assistant.grounding.labels import read_chunk_groundings
     from assistant.language.corpus import read_corpus
 
@@ -315,7 +318,4 @@ def load_generation_model(corpus_paths=None, use_cache: bool = True) -> Generati
     from assistant.progress import working
 
     with working("training the description model (first use; cached after)"):
-        model = GenerationModel().fit(descriptions, commands)
-    if use_cache:
-        write_cache(path, model)
-    return model
+        return GenerationModel().fit(descriptions, commands)

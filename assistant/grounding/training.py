@@ -16,7 +16,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from assistant.errors import AssistantError, UnknownNameError
-from assistant.fileio import cache_dir, read_cache, write_cache
+from assistant.fileio import cache_dir, cached
 from assistant.grounding.combined import CombinedGrounder
 from assistant.grounding.labels import ChunkGroundingFile, attach_structures, read_chunk_groundings
 from assistant.grounding.learned import LearnedGrounder
@@ -108,19 +108,19 @@ def train_grounder(name: str = DEFAULT_GROUNDER, corpus_paths=None, *, use_cache
     grounder = make_grounder(name, **params)
     key = files_key([*csvs, *xmls], f"{name}{sorted(grounder.get_params().items())}")
     cache_file = cache_dir() / f"grounder-{name}-{key}.pickle"
-    if use_cache and (cached := read_cache(cache_file, type(grounder))) is not None:
-        return cached
-    from assistant.progress import working
 
-    with working(f"training the {name} grounder (first use; cached after)"):
-        labels = load_labels(csvs, xmls)
-        if not labels.commands:
-            raise AssistantError(f"no readable rows in {', '.join(map(str, csvs))}: "
-                                 + ("; ".join(labels.problems[:3]) or "the files are empty"))
-        for problem in labels.problems[:5]:
-            log.warning("%s", problem)
-        grounder.fit(labels.records, labels.groundings)
-    grounder.training_files_ = [str(p) for p in csvs]
-    if use_cache:
-        write_cache(cache_file, grounder)
-    return grounder
+    def fit():
+        from assistant.progress import working
+
+        with working(f"training the {name} grounder (first use; cached after)"):
+            labels = load_labels(csvs, xmls)
+            if not labels.commands:
+                raise AssistantError(f"no readable rows in {', '.join(map(str, csvs))}: "
+                                     + ("; ".join(labels.problems[:3]) or "the files are empty"))
+            for problem in labels.problems[:5]:
+                log.warning("%s", problem)
+            grounder.fit(labels.records, labels.groundings)
+        grounder.training_files_ = [str(p) for p in csvs]
+        return grounder
+
+    return cached(cache_file, fit, type(grounder), use_cache=use_cache)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from assistant.errors import AssistantError
-from assistant.fileio import cache_dir, read_cache, write_cache
+from assistant.fileio import cache_dir, cached
 from assistant.language.chunker import NestedChunker
 from assistant.language.corpus import CorpusReadResult, default_corpus_paths, read_corpora
 from assistant.language.postag import LEXICON_PATH, SemanticPosTagger
@@ -96,15 +96,14 @@ class LanguageModel:
             )
         key = corpus_key(paths)
         cache_file = cache_dir() / f"language-{key}.pickle"
-        if use_cache and (model := read_cache(cache_file, cls)) is not None:
-            return model
-        from assistant.progress import working
 
-        with working("training the tagger and chunker (first use; cached after)"):
-            model = cls.train(read_corpora(paths))
-        if use_cache:
-            write_cache(cache_file, model)
-        return model
+        def train():
+            from assistant.progress import working
+
+            with working("training the tagger and chunker (first use; cached after)"):
+                return cls.train(read_corpora(paths))
+
+        return cached(cache_file, train, cls, use_cache=use_cache)
 
     # --- use -------------------------------------------------------------------------------
     def analyse(self, text: str) -> Analysis:

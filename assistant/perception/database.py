@@ -38,7 +38,7 @@ from importlib import resources
 
 import numpy as np
 
-from assistant.fileio import atomic_write_bytes, cache_dir
+from assistant.fileio import atomic_write_bytes, cache_dir, cached
 from assistant.geometry import Pose2D, wrap_angle
 from assistant.perception.features import SHAPE_LENGTH, orientation_features, shape_descriptor
 from assistant.perception.frame import FrameParams, analyse_frame
@@ -465,15 +465,24 @@ def cached_database(name: str, items: list[Item], plan: ViewPlan,
                     params: FrameParams = FrameParams()) -> Database:
     """:func:`render_database`, cached under ``cache_dir()/perception`` by a content hash."""
     path = cache_dir() / "perception" / f"db-{database_key(name, items, plan, params)}.npz"
-    if path.exists():
-        try:
-            return Database.from_bytes(path.read_bytes())
-        except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile) as error:
-            logging.getLogger(__name__).warning(  # a damaged cache file is rebuilt
-                "ignoring unreadable view database %s (%s); rendering it again", path, error)
-    from assistant.progress import working
 
-    with working(f"rendering {len(items)} furniture items' training views ({name}; first use, cached after)"):
-        db = render_database(items, plan, params)
-    atomic_write_bytes(path, db.to_bytes())
-    return db
+    def render() -> Database:
+        from assistant.progress import working
+
+        with working(f"rendering {len(items)} furniture items' training views ({name}; first use, cached after)"):
+            return render_database(items, plan, params)
+
+    return cached(path, render, read=_read_database,
+                  write=lambda where, db: atomic_write_bytes(where, db.to_bytes()))
+
+
+def _read_database(path: Path) -> Database | None:
+    """The view database cached at ``path``, or None (missing, or damaged: rendered again)."""
+    if not path.exists():
+        return None
+    try:
+        return Database.from_bytes(path.read_bytes())
+    except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile) as error:
+        logging.getLogger(__name__).warning(  # a damaged cache file is rebuilt
+            "ignoring unreadable view database %s (%s); rendering it again", path, error)
+        return None

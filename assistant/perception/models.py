@@ -14,7 +14,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from assistant.fileio import cache_dir, read_cache, write_cache
+from assistant.fileio import cache_dir, cached
 from assistant.perception.classifiers import FurnitureClassifier, view_subclasses
 from assistant.perception.database import (
     Database,
@@ -125,12 +125,12 @@ def trained_models(method: str = DEFAULT_METHOD, features: str = DEFAULT_FEATURE
     """The models trained on the training database, cached by a hash of their inputs."""
     key = models_key(method, features, plans, items, variants)
     path = cache_dir() / "perception" / f"models-{method}-{features}-{key}.pkl"
-    if (models := read_cache(path, PerceptionModels)) is not None:
-        return models
-    from assistant.progress import working
 
-    with working(f"training the furniture classifier ({method}; first use, cached after)"):
-        models = fit_models(training_database(plans, items, variants=False), method, features,
-                            verifier_db=training_database(plans, items) if variants else None)
-    write_cache(path, models)
-    return models
+    def fit():
+        from assistant.progress import working
+
+        with working(f"training the furniture classifier ({method}; first use, cached after)"):
+            return fit_models(training_database(plans, items, variants=False), method, features,
+                              verifier_db=training_database(plans, items) if variants else None)
+
+    return cached(path, fit, PerceptionModels)

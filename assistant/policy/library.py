@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from assistant.errors import UnknownNameError
-from assistant.fileio import cache_dir, read_cache, write_cache
+from assistant.fileio import cache_dir, cached
 from assistant.policy.demonstration import load_demonstrations
 from assistant.policy.model import PolicyModel
 from assistant.policy.rdt import RDT, TABLE_RDTS, parse_rdt
@@ -82,21 +82,24 @@ class PolicyLibrary:
     def _load_or_train(self) -> dict[str, PolicyModel]:
         if not self.directory.is_dir():
             raise UnknownNameError("demonstration directory", str(self.directory), [str(DEFAULT_DIRECTORY)])
-        if self.use_cache:
-            self.cache_path = cache_dir() / "policy" / f"{self._key()}.pkl"
-            if (models := read_cache(self.cache_path, dict)) is not None:
-                self.loaded_from_cache = True
-                return models
-        demos = [d for directory in self._directories() for d in load_demonstrations(directory)]
-        by_rdt: dict[str, list] = {}
-        for demo in demos:
-            by_rdt.setdefault(demo.rdt, []).append(demo)
-        from assistant.progress import counted
+        trained = []
 
-        models = {rdt: PolicyModel(rdt, **self.model_params).fit(by_rdt[rdt])
-                  for rdt in counted(sorted(by_rdt), "training the policy models (first use; cached after)")}
-        if self.use_cache and self.cache_path is not None:
-            write_cache(self.cache_path, models)
+        def train() -> dict[str, PolicyModel]:
+            from assistant.progress import counted
+
+            demos = [d for directory in self._directories() for d in load_demonstrations(directory)]
+            by_rdt: dict[str, list] = {}
+            for demo in demos:
+                by_rdt.setdefault(demo.rdt, []).append(demo)
+            trained.append(True)
+            return {rdt: PolicyModel(rdt, **self.model_params).fit(by_rdt[rdt])
+                    for rdt in counted(sorted(by_rdt), "training the policy models (first use; cached after)")}
+
+        if not self.use_cache:
+            return train()
+        self.cache_path = cache_dir() / "policy" / f"{self._key()}.pkl"
+        models = cached(self.cache_path, train, dict)
+        self.loaded_from_cache = not trained
         return models
 
     def rdts(self) -> list[str]:
