@@ -862,10 +862,10 @@ class DialogueManager:
             # "go to the couch": the rooms that have one (a kind word said narrows them: "coffee table")
             node = plan.nodes[-1]
             items = [f for f in self.world.scene(self.scene).furniture if f.word == node.target]
-            said = [*node.descriptors, node.support] if node.support and node.support != node.target \
+            kind_words = [*node.descriptors, node.support] if node.support and node.support != node.target \
                 else list(node.descriptors)  # "the desk": a table whose model is a desk
-            said += [w for w in text.lower().split() if w in LOOKS]  # "the blue chair": its model
-            kinds = [f for f in items if any(d in f.model.split() for d in said)]
+            kind_words += [w for w in text.lower().split() if w in LOOKS]  # "the blue chair": its model
+            kinds = [f for f in items if any(d in f.model.split() for d in kind_words)]
             homes = [r for r in self.rooms if any(f.room == r for f in (kinds or items))]
             # the furniture it is told by ("the table next to the bed"): only a room with that too
             landmarks = {ref for n in plan.nodes for ref, _ in n.pairs if ref in FURNITURE_WORDS.values()}

@@ -795,3 +795,17 @@ def test_why_did_you_stop_after_a_failure_keeps_its_capital_i(services, tmp_path
     m.wait(10)
     reply = m.handle("why did you stop?").reply
     assert reply.startswith("I couldn't go on: ") and "i'm" not in reply
+
+
+def test_a_thing_told_on_a_kind_of_table_is_fetched_and_answered(services, tmp_path):
+    """"the laptop is on the dinner table": the room is found from the kind of table, and the
+    fetch's reply is made from the person's words (a list of descriptors had taken their name:
+    "something went wrong inside me after the fetch (AttributeError …)")."""
+    said = []
+    fetcher = StandInFetcher(furniture="dinnertable_1")
+    m = make(services, tmp_path, fetcher, said)
+    turn = m.handle("the laptop is on the dinner table")
+    assert (turn.action, turn.outcome, turn.reply) == ("fetch", "started", "Going to the living room.")
+    assert turn.text == "the laptop is on the dinner table"
+    final = m.wait(10)
+    assert final.outcome == "success" and "went wrong" not in final.reply, final.reply
