@@ -82,7 +82,7 @@ class Fetcher:
 
     def fetch(self, text: str, world, scene: str = "original", perception: str = "sensed", *,
               robot: str = DEFAULT_ROBOT, seed: int = 0, object_name: str | None = None, on_event=None,
-              stop=None, on_pose=None) -> Result:
+              stop=None, on_pose=None, start=None) -> Result:
         """Carry out the fetch command ``text`` in ``world`` (a name or
         :class:`~assistant.world.World`) with the robot ``robot`` (a robot spec, or an
         unconnected robot such as a replay) and
@@ -90,11 +90,13 @@ class Fetcher:
         plan's object for judging the end (the dev set says which object a command is about);
         ``on_event(name, data)`` gets the task's events; ``stop`` (a
         :class:`threading.Event`) stops the robot at its next call; ``on_pose(pose)`` gets its
-        true pose now and then. Returns a ``fetch`` :class:`Result` whose ``data`` are the
+        true pose now and then; ``start`` (a :class:`~assistant.geometry.Pose2D`) is where the
+        robot stands (default: the world's start pose; a conversation gives where the last task
+        left it). Returns a ``fetch`` :class:`Result` whose ``data`` are the
         ``assistant fetch --json`` fields."""
         from assistant.world import load_world
 
-        start = time.perf_counter()
+        began = time.perf_counter()
         w = load_world(world) if isinstance(world, str) else world
         scene = w.scene(scene).name
         plan = self.parser(w).parse(text).plan
@@ -104,21 +106,24 @@ class Fetcher:
         # way becomes an ``objects_seen`` event for the memory
         detector = SimObjectDetector.for_scene(w.scene(scene), seed=seed)
         task = FetchTask(self.policies, object_detector=detector)
-        with open_robot(robot, w, scene, seed=seed, noise=self.noise) as bot:
+        with open_robot(robot, w, scene, seed=seed, noise=self.noise, start=start) as bot:
             try:
-                ctx = TaskContext.start(w, StoppableRobot(bot, stop, on_pose), source,
-                                        max_sim_seconds=self.max_sim_seconds, on_event=on_event)
+                stoppable = StoppableRobot(bot, stop, on_pose)
+                ctx = TaskContext.start(w, stoppable, source, max_sim_seconds=self.max_sim_seconds,
+                                        on_event=on_event)
                 outcome = task.run(ctx, plan)
             except Stopped:
+                stoppable.report_pose()
                 return Result("fetch", Status.STOPPED, "stopped", {"text": text, "plan": plan.to_dict()},
                               furniture=source.furniture(), object=plan.object,
-                              wall_seconds=time.perf_counter() - start)
+                              wall_seconds=time.perf_counter() - began)
             final_frame = bot.depth_frame()
             true_pose = getattr(bot, "ground_truth_pose", None)
+            stoppable.report_pose()
         obj = object_name or plan.object
         end = _judge_end(w, scene, obj, outcome, final_frame, detector, source.furniture())
         data = _fetch_fields(text, w, scene, perception, seed, robot, plan, obj, outcome, end, true_pose)
-        data["wall_seconds"] = round(time.perf_counter() - start, 3)
+        data["wall_seconds"] = round(time.perf_counter() - began, 3)
         status = Status.SUCCESS if data["failure"] is None else Status(data["failure"])
         message = outcome.message if outcome.success or status is not Status.NOT_VISIBLE else \
             f"{outcome.message}, but the {obj or 'object'} is not in view"

@@ -37,13 +37,18 @@ class StoppableRobot:
                 raise Stopped()
             out = value(*args, **kwargs)
             self._calls += 1
-            if self._on_pose is not None and self._calls % self._every == 0:
-                pose = getattr(self._robot, "ground_truth_pose", None)
-                if pose is not None:
-                    try:
-                        self._on_pose(pose)
-                    except Exception:  # drawing is a courtesy: a viewer's problem must not stop the task
-                        pass
+            if self._calls % self._every == 0:
+                self.report_pose()
             return out
 
         return call
+
+    def report_pose(self) -> None:
+        """Give ``on_pose`` the robot's true pose now (also at a task's end, stopped or not: a
+        conversation starts its next task where this one left the robot)."""
+        pose = getattr(self._robot, "ground_truth_pose", None)
+        if self._on_pose is not None and pose is not None:
+            try:
+                self._on_pose(pose)
+            except Exception:  # drawing is a courtesy: a viewer's problem must not stop the task
+                pass

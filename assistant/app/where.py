@@ -160,12 +160,15 @@ class Finder:
         source = make_furniture_source(perception, world, scene,
                                        detector=self.furniture_detector if perception == "sensed" else None)
         with open_robot(robot, world, scene, seed=seed, noise=self.noise, start=start) as bot:
+            stoppable = StoppableRobot(bot, stop, on_pose)
             try:
-                ctx = TaskContext.start(world, StoppableRobot(bot, stop, on_pose), source,
-                                        max_sim_seconds=max_sim_seconds, on_event=on_event)
+                ctx = TaskContext.start(world, stoppable, source, max_sim_seconds=max_sim_seconds,
+                                        on_event=on_event)
                 return SearchTask(detector, **params).run(ctx, name)
             except Stopped as stopped:
                 raise Stopped(source.furniture()) from stopped
+            finally:
+                stoppable.report_pose()
 
     def _from_world_file(self, name: str, world, scene: str, pose: Pose2D, style: str, remembered) -> Result:
         """The answer from a remembered position, or from the world file (``oracle``)."""

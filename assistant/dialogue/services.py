@@ -94,26 +94,29 @@ class Services:
             return self._finder
 
     # ---------------------------------------------------------------- the use cases
-    def fetch(self, text: str, world: str, scene: str, on_event=None, stop=None, on_pose=None):
+    def fetch(self, text: str, world: str, scene: str, on_event=None, stop=None, on_pose=None, start=None):
         """Run one fetch command (blocking; call it from a worker thread): an
         :class:`~assistant.app.Result`, ``stopped`` once ``stop`` (a
-        :class:`threading.Event`) is set. ``on_pose(pose)``: the robot's true pose now and then."""
+        :class:`threading.Event`) is set. ``on_pose(pose)``: the robot's true pose now and then;
+        ``start``: where the robot stands (the pose the last task left it at; None: the
+        world's start pose)."""
         if self._fetcher is not None:
             return self._fetcher(text, world, scene, on_event)
         return self.fetcher().fetch(text, world, scene, self.perception, robot=self.robot, seed=self.seed,
-                                    on_event=on_event, stop=stop, on_pose=on_pose)
+                                    on_event=on_event, stop=stop, on_pose=on_pose, start=start)
 
-    def search(self, name: str, world, scene: str, on_event=None, stop=None, on_pose=None, style: str = "static"):
-        """Search the home for object ``name`` from the robot's start, then describe where it is
-        to a person where the robot started (blocking; call it from a worker thread): a
-        ``where`` :class:`~assistant.app.Result`."""
+    def search(self, name: str, world, scene: str, on_event=None, stop=None, on_pose=None, style: str = "static",
+               start=None):
+        """Search the home for object ``name`` from where the robot stands (``start``; None: the
+        world's start pose), then describe where it is to a person where the robot started
+        (blocking; call it from a worker thread): a ``where`` :class:`~assistant.app.Result`."""
         from assistant.world import load_world
 
         w = load_world(world) if isinstance(world, str) else world
         searched = self._searcher(name, w.name, scene, on_event) if self._searcher is not None else None
         return self.finder().where_is(name, w, scene, robot=self.robot, perception=self.perception, style=style,
                                       seed=self.seed, on_event=on_event, stop=stop, on_pose=on_pose,
-                                      searched=searched)
+                                      searched=searched, start=start)
 
     def describe(self, name: str, world, scene: str, style: str = "static", remembered=None):
         """Where ``name`` is from the world file (``oracle``) or from a ``remembered``

@@ -170,11 +170,13 @@ class TaskWorker:
         before = c.memory.recall(c.world.name, obj) if obj else None
         on_event = self._events(job, recorder, obj)
         try:
+            here = c.robot_pose  # where the last task left the robot (None: the world's start)
             if job.kind == "search":
                 result = c.services.search(text, c.world, c.scene, on_event, stop=job.stop, on_pose=c.pose_listener,
-                                           style=style)
+                                           style=style, start=here)
             else:
-                result = c.services.fetch(text, c.world.name, c.scene, on_event, stop=job.stop, on_pose=c.pose_listener)
+                result = c.services.fetch(text, c.world.name, c.scene, on_event, stop=job.stop,
+                                          on_pose=c.pose_listener, start=here)
         except Stopped:
             final = self._stopped(job, text, recorder, None, start)
         except Exception as error:  # noqa: BLE001 — any failure of the task becomes a reply, the chat goes on

@@ -1,6 +1,7 @@
 """The manager with the real parser and describer; the simulator is replaced by a stand-in
 fetcher (the real one is exercised by `assistant eval dialogue` and the chat CLI test)."""
 
+import math
 import sys
 import threading
 import time
@@ -809,3 +810,19 @@ def test_a_thing_told_on_a_kind_of_table_is_fetched_and_answered(services, tmp_p
     assert turn.text == "the laptop is on the dinner table"
     final = m.wait(10)
     assert final.outcome == "success" and "went wrong" not in final.reply, final.reply
+
+
+def test_the_next_task_starts_where_the_last_one_left_the_robot(services, tmp_path):
+    """"go to the bedroom", then "turn around": the robot turns in the bedroom (each task used
+    to start the simulated robot at the home's start pose, in the hallway)."""
+    m = DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"))
+    m.handle("go to the bedroom")
+    first = m.wait(120)
+    assert first.outcome == "success" and m.robot_room()[0] == "bedroom"
+    x, y, heading = first.data["final_pose"]
+    m.handle("turn around")
+    turned = m.wait(60)
+    tx, ty, theading = turned.data["final_pose"]
+    assert turned.outcome == "success" and m.robot_room()[0] == "bedroom"
+    assert math.hypot(tx - x, ty - y) < 0.3
+    assert abs(math.remainder(theading - heading - math.pi, 2 * math.pi)) < 0.3
