@@ -120,8 +120,10 @@ def activity_phrase(name: str, data: dict) -> str | None:
     return None
 
 
+#: words that single out no option (a furniture word does: "the one by the table" among couches; a
+#: word every option has, such as "table" among tables, adds the same to each)
 _STOP = {"the", "one", "with", "that", "this", "near", "next", "and", "its", "it", "is", "on", "of", "to",
-         "by", "in", "at", "a", "an", "table", "tables", "please", "which"}
+         "by", "in", "at", "a", "an", "please", "which"}
 
 
 # ---------------------------------------------------------------------- furniture words

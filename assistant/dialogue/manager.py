@@ -28,7 +28,7 @@ from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distin
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         in_place_slot, options_named, unused_mentions, with_articles)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        expand_shorthand, teach_phrase, told_place, where_check_parts)
+                                        expand_shorthand, ordinal_choice, teach_phrase, told_place, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
@@ -874,7 +874,7 @@ class DialogueManager:
             if len(homes) == 1:
                 room, text = homes[0], f"{text} in the {homes[0]}"
             elif homes and not force:
-                self.pending = {"kind": "room", "text": text, "original": said}
+                self.pending = {"kind": "room", "text": text, "original": said, "rooms": homes}
                 word = " ".join([*node.descriptors, node.support or node.target]) if kinds else node.target
                 return self._turn(said, "command", f"Which room is the {word} in — "
                                   + _join([f"the {r}" for r in homes], "or") + "?", "clarify", "asked",
@@ -914,8 +914,8 @@ class DialogueManager:
         one out ("the hexagon table") picks it, else ask which; when the plan dropped the
         furniture word and the room has just one, go to that one."""
         items = [f for f in self.world.scene(self.scene).furniture if f.word == word and (room is None or f.room == room)]
-        if room is None or not items:
-            return None
+        if room is None or not items or (len(items) == 1 and not dropped):
+            return None  # the only couch of the room: the words as said find it
         named = {str(getattr(m, "said", "")).lower() for m in mentions}
         models = [f for f in items if named & set(f.model.split())]  # "the desk": only the desks
         shown = word
@@ -996,13 +996,16 @@ class DialogueManager:
                 self.pending = None  # "I don't know", "anywhere", "search everywhere": the robot searches
                 return self._search(text, "command", p["object"], "static", start,
                                     lead=f"OK, I'll look for your {p['object']} everywhere.")
+            offered = p.get("rooms") or self.rooms  # the rooms the question named, in its order
+            if room is None and (i := ordinal_choice(norm)) is not None and -len(offered) <= i < len(offered):
+                room = offered[i]  # "the first one", "the second"
             if room is None:
                 plan = self.services.parser(self.world).parse(text).plan
                 room = plan.room
             if room is not None:
                 self.pending = None
                 return self._command(f"{p['text']} in the {room}", start, original=text)
-            rooms = _join(["the " + r for r in self.rooms], "or")
+            rooms = _join(["the " + r for r in offered], "or")
             missing = unknown_room_named(norm.split(), self.world)
             if missing is not None:
                 return self._turn(text, "answer", f"There is no {missing} here; the rooms are {rooms}. "

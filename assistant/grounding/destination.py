@@ -5,8 +5,12 @@ The corpus descriptions say where a thing is; a person also just sends the robot
 furniture, and the chunker reads "go to the couch" as a room phrase that grounds to nothing.
 :func:`said_destination` reads such a command — a verb of going, "to"/"towards"/"up to"/"next to",
 the furniture (its size, shape and kind words kept as descriptors), and at most the room it is in
-— into the node the fetch task faces ("room-center-couch"). Anything else in the words and it
-gives None: the grounders' reading stands.
+— into the node the fetch task faces ("room-center-couch"). The furniture may be told by another
+piece or a wall ("go to the couch by the table", "the chair to the left of the bed", "the couch
+against the right wall": ``table-beside-couch``, ``bed-left-chair``, ``wall-right-couch``), as the
+chat's own questions offer them ("the one by the table?"): the grounders, trained on where things
+lie, read the first as the table. Anything else in the words and it gives None: the grounders'
+reading stands.
 """
 
 from __future__ import annotations
@@ -22,9 +26,21 @@ __all__ = ["said_destination"]
 _GO = r"(?:go|walk|drive|head|move|come|get|roll|navigate|take me|bring me|lead me|show me the way)"
 _TO = r"(?:back |over |right |straight )*(?:to|towards|toward|up to|next to|near|over to|in front of|close to)"
 _DET = r"(?:the|my|your|our|that|this)"
+#: how a person tells one piece of furniture by another → the RDT direction
+_RELATIONS = {"by": "beside", "beside": "beside", "next to": "beside", "near": "beside", "close to": "beside",
+              "nearest": "beside", "nearest to": "beside", "closest to": "beside", "near to": "beside",
+              "in front of": "front", "facing": "front", "behind": "back", "in back of": "back",
+              "to the left of": "left", "left of": "left", "on the left of": "left",
+              "to the right of": "right", "right of": "right", "on the right of": "right",
+              "against": "beside", "along": "beside", "at": "beside", "on": "beside"}
+_RELATION = "|".join(sorted((re.escape(r) for r in _RELATIONS), key=len, reverse=True))
 _PATTERN = re.compile(r"^(?:(?:please|robot|okay|ok|now|just|um|uh|can you|could you|would you|will you) )*"
                       + _GO + r" " + _TO + r" " + _DET + r" (?P<thing>[a-z ]+?)"
+                      r"(?: (?:that is |that's |which is |thats )?(?P<relation>" + _RELATION + r") (?:the|my|your|our)"
+                      r" (?P<landmark>[a-z ]+?))?"
                       r"(?: (?:in|inside) (?:the|my|our) [a-z ]+)?(?: please| now| for me)*$")
+#: walls said by side ("against the left wall"): the side is the RDT direction
+_WALL_SIDES = {"left": "left", "right": "right", "back": "back", "far": "back", "front": "front", "near": "front"}
 
 
 #: colour and material words said of furniture ("the blue chair", "the wooden table"): a depth
@@ -52,5 +68,18 @@ def said_destination(words: Sequence[str], rooms: Sequence[str] = ()) -> RDTNode
         return None
     if any(r in " ".join(thing) for r in rooms):
         return None
-    return RDTNode(category, support=head if head != category else category,
+    pairs: tuple[tuple[str, str], ...] = ()
+    if m.group("relation"):
+        landmark = m.group("landmark").split()
+        if any(r in " ".join(landmark) for r in rooms):
+            return None
+        if landmark[-1] == "wall" and len(landmark) == 2 and landmark[0] in _WALL_SIDES:
+            pairs = (("wall", _WALL_SIDES[landmark[0]]),)  # "against the left wall"
+        else:
+            reference = furniture_category(canonical_word(landmark[-1]))
+            if reference is None or reference == category or any(
+                    w not in DESCRIPTORS and w not in LOOKS for w in landmark[:-1]):
+                return None
+            pairs = ((reference, _RELATIONS[m.group("relation")]),)
+    return RDTNode(category, pairs=pairs, support=head if head != category else category,
                    descriptors=said_descriptors(thing[:-1]))

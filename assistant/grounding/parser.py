@@ -112,9 +112,11 @@ class CommandParser:
         if moves is not None:  # "turn left", "back up a little": the robot's own moves, nothing else
             plan = GroundingPlan(nodes=moves, kind="dynamic", flags=["motion"])
             return ParseResult(analysis, records, groundings, finish_flags(plan, words=len(analysis.tokens)))
-        if not plan.nodes and plan.object is None:  # "go to the couch": the furniture is the place
+        if plan.object is None:  # "go to the couch (by the table)": the furniture is the place
             said = said_destination(words, room_names_of(self.world))
-            if said is not None:
+            last = plan.nodes[-1] if plan.nodes else None
+            if said is not None and (last is None or (said.referenced and (
+                    last.target != said.target or not last.referenced))):
                 plan.nodes, plan.support, plan.kind = [said], said.support, "static"
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
                                    analysis.unknown, corrections, plan)

@@ -826,3 +826,50 @@ def test_the_next_task_starts_where_the_last_one_left_the_robot(services, tmp_pa
     assert turned.outcome == "success" and m.robot_room()[0] == "bedroom"
     assert math.hypot(tx - x, ty - y) < 0.3
     assert abs(math.remainder(theading - heading - math.pi, 2 * math.pi)) < 0.3
+
+
+def make_in(world, services, tmp_path, fetcher):
+    return DialogueManager(world, services=services.using(fetcher=fetcher),
+                           memory=ObjectMemory(tmp_path / "memory.json"))
+
+
+def test_an_answer_in_the_questions_own_words_picks_that_couch(services, tmp_path):
+    """"the one by the table" among two couches (a furniture word told them apart only among
+    tables), and the command sent is one the grounders read as that couch."""
+    fetcher = StandInFetcher(furniture="couch_1")
+    m = make_in("two-bedrooms-house", services, tmp_path, fetcher)
+    asked = m.handle("go to the couch")
+    assert asked.action == "clarify" and "the one by the table" in asked.reply
+    turn = m.handle("the one by the table")
+    assert turn.action == "fetch" and turn.data["chosen"] == "couch_1"
+    assert turn.data["plan"]["nodes"] == ["table-beside-couch"]
+    m.wait(10)
+
+
+def test_the_only_couch_of_the_room_is_gone_to_as_said(services, tmp_path):
+    """One couch in the room: the command is not rewritten with a description the grounders
+    could not read ("go to the couch against the left wall" had no node: the robot stopped at
+    a table)."""
+    fetcher = StandInFetcher(furniture="couch_1")
+    m = make_in("training-home", services, tmp_path, fetcher)
+    turn = m.handle("go to the couch")
+    assert turn.action == "fetch" and turn.data["plan"]["nodes"] == ["room-center-couch"]
+    m.wait(10)
+    assert fetcher.texts == ["go to the couch in the living room"]
+
+
+@pytest.mark.parametrize("answer, room", [("the first one", "studio"), ("the second", "office"),
+                                          ("the last one", "office")])
+def test_a_room_question_is_answered_by_its_order(services, tmp_path, answer, room):
+    m = make_in("hk-studio", services, tmp_path, StandInFetcher(furniture="desk_1"))
+    asked = m.handle("go to the desk")
+    assert asked.reply == "Which room is the desk in — the studio or the office?"
+    turn = m.handle(answer)  # gone to, or asked which of that room's desks
+    assert (turn.action == "fetch" and turn.data["room"] == room) or (
+        turn.action == "clarify" and f"in the {room} —" in turn.reply), turn.reply
+    if turn.action == "fetch":
+        m.wait(10)
+    m2 = make_in("hk-studio", services, tmp_path, StandInFetcher())
+    m2.handle("go to the desk")
+    again = m2.handle("hmm")  # the question again, with the rooms it offered
+    assert again.reply == "Sorry, which room — the studio or the office?"
