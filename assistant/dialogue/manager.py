@@ -35,6 +35,7 @@ from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
+from assistant.dialogue.steps import STEP_BREAK, split_steps
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them, related_seen
 from assistant.generation import is_are, some
@@ -108,6 +109,8 @@ class DialogueManager:
         self.on_finish = on_finish
         self.on_pose = on_pose
         self.robot_pose = None  # the robot's pose last reported while a task ran (pose_listener)
+        self.steps: list[str] = []  # the errand's steps still to do ("…, then go to the bedroom")
+        self._stepping = False  # True while the next step starts (it keeps the steps after it)
         self.pending: dict | None = None
         self.synonyms: dict[str, str] = {}
         self.last_said = ""
@@ -373,8 +376,32 @@ class DialogueManager:
         return self._turn(text, intent_name, "OK — I'm not doing anything right now.", "none", "answered", start)
 
     def stop(self) -> bool:
-        """Ask a running task to stop (Ctrl-C); True when one was running."""
+        """Ask a running task to stop (Ctrl-C); True when one was running. The errand's
+        steps still to do are dropped."""
+        self.steps = []
         return self.worker.stop()
+
+    def after_task(self, final: Turn) -> None:
+        """Called by the worker when a task has ended and its reply was said: the errand's next
+        step starts (its "Going to the bedroom." said), or, when the task failed, the steps
+        left are dropped and said so."""
+        if not self.steps:
+            return
+        if final.outcome != "success":
+            left, self.steps = self.steps, []
+            if final.outcome != "stopped":
+                self.say(f"So I haven't done the rest: {_join(left)}.")
+            return
+        step = self.steps.pop(0)
+        self._stepping = True
+        try:
+            turn = self._command(step, time.perf_counter(), original=step)
+        finally:
+            self._stepping = False
+        if turn.reply:
+            self.say(turn.reply)
+        if turn.action != "fetch":  # a question, or a step it cannot do: the rest waits for the answer
+            self.steps = [] if turn.outcome == "not_understood" else self.steps
 
     @property
     def fetch_started(self) -> bool:
@@ -773,11 +800,34 @@ class DialogueManager:
     def _command(self, text: str, start: float, force: bool = False, original: str | None = None) -> Turn:
         self._redirected = False
         self.last_choice = None
+        if not force and not self._stepping and STEP_BREAK.search(text):
+            steps = split_steps(text, self._step_room)
+            if len(steps) > 1:  # "go to the living room, then go to the bedroom": one step at a time
+                turn = self._command(steps[0], start, original=original or text)
+                if turn.action in ("fetch", "clarify") and turn.outcome in ("started", "asked"):
+                    self.steps = steps[1:]
+                    if turn.action == "fetch":
+                        rooms = _join([f"the {self._step_room(s)}" for s in steps[1:]], "and then")
+                        turn.reply = f"{turn.reply} After that, {rooms}."
+                        self.last_said = turn.reply
+                return turn
         turn = self._command_turn(text, start, force, original)
         if self._redirected and turn.reply:  # a search stopped for what the person just told
             turn.reply = f"OK, I'll stop searching. {turn.reply}"
             self.last_said = turn.reply
         return turn
+
+    def _step_room(self, part: str) -> str | None:
+        """The room one step of an errand sends the robot to (:mod:`~assistant.dialogue.steps`):
+        of the rooms its words name, the grounded plan's, else the last said ("through the living
+        room into the inner hall"); None when it names none (the grounders give a room even to
+        "turn left")."""
+        low = part.lower()
+        named = sorted((m.start(), r) for r in self.rooms for m in re.finditer(rf"\b{re.escape(r)}\b", low))
+        if not named:
+            return None
+        plan = self.services.parser(self.world).parse(self._substitute(part)).plan
+        return plan.room if plan.room in {r for _, r in named} else named[-1][1]
 
     def _command_turn(self, text: str, start: float, force: bool, original: str | None) -> Turn:
         said = original or text
@@ -849,7 +899,7 @@ class DialogueManager:
             # "the remote is on the coffee table" while the robot searches for the remote: go there
             self.worker.stop(quiet=True)
             self._redirected = True
-        elif self.busy:
+        elif self.busy and not self._stepping:  # (an errand's next step starts as the last one ends)
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
         if is_motion_plan(plan):  # "turn around", "back up a little": no room to ask for
@@ -1191,7 +1241,10 @@ class DialogueManager:
     def _start_job(self, kind: str, said: str, reply: str, text: str, task_room, task_object, start,
                    intent_name="command", style: str = "static", **data) -> Turn:
         """Reply at once and run a fetch (``text``: the command) or a search (``text``: the
-        object) in the worker; its final :class:`Turn` comes through ``say``/``on_finish``."""
+        object) in the worker; its final :class:`Turn` comes through ``say``/``on_finish``. A
+        task the person asks for replaces an errand's steps still to do."""
+        if not self._stepping:
+            self.steps = []
         turn = self._turn(said, intent_name, reply, kind, "started", start, **data)
         turn.final = False
         self.worker.start(kind, text, task_room, task_object, style, said=said)

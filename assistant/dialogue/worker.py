@@ -91,12 +91,18 @@ class TaskWorker:
         return job if job.final.outcome == "stopped" else None
 
     def wait(self, timeout: float | None = None) -> Turn | None:
-        """The last task's final turn once it has ended (None if none ran or it still runs)."""
+        """The last task's final turn once it has ended (None if none ran or it still runs); an
+        errand's next step, started as a task ended, is waited for too."""
+        deadline = None if timeout is None else time.monotonic() + timeout
         job = self.job
-        if job is None:
-            return None
-        job.thread.join(timeout)
-        return None if job.thread.is_alive() else job.final
+        while job is not None:
+            job.thread.join(None if deadline is None else max(0.0, deadline - time.monotonic()))
+            if job.thread.is_alive():
+                return None
+            if self.job is job:
+                return job.final
+            job = self.job  # the next step of an errand
+        return None
 
     def close(self, timeout: float = 10.0) -> None:
         if self.job is not None:
@@ -195,6 +201,11 @@ class TaskWorker:
                 c.on_finish(final)
             except Exception:  # a front end's problem must not kill the worker
                 pass
+        try:
+            if (after := getattr(c, "after_task", None)) is not None:
+                after(final)  # an errand's next step starts here, in this thread's last moments
+        except Exception as error:  # noqa: BLE001 — the next step's failure is said, the chat goes on
+            self.speak(f"Sorry, I couldn't go on to the next step ({error}).")
 
     def _final(self, job: Job, text: str, result, recorder, obj, before, start: float) -> Turn:
         c = self.conversation

@@ -36,6 +36,9 @@ COMMON_ROOMS = ("kitchen", "bathroom", "bedroom", "living room", "dining room", 
 #: object phrase and its "in the hallway");
 #: a room named in a reference phrase (ORMRP "past the kitchen") is a landmark, not the target
 ROOM_TARGET_LABELS = frozenset({"ORMTP", "IRMTP", "OBTP", "OBRP"})
+#: words that say a room without naming it ("the room on the left", "the next doorway")
+ROOM_WORDS = frozenset({"room", "rooms", "door", "doorway", "doors", "entrance", "hall", "hallway", "corridor",
+                        "opening"})
 
 
 def room_names_of(world) -> list[str]:
@@ -95,14 +98,19 @@ def _says_object(words: Sequence[str], obj: str) -> bool:
 def named_room_groundings(records: Sequence[ChunkRecord], groundings: Sequence[ChunkGrounding],
                           world) -> list[ChunkGrounding]:
     """``groundings`` with the rooms the chunks name in so many words (see the module doc);
-    unchanged when ``world`` is None."""
+    unchanged when ``world`` is None. When a chunk names a room, a chunk grounded to a room
+    that says no room at all — not even "room" ("turn left" guessed as the bedroom before "go
+    into the living room") — loses its guess: the room said is the one meant."""
     rooms = room_names_of(world)
     if not rooms:
         return list(groundings)
+    said = [named_room(record.words, rooms) for record in records]
     out = []
-    for record, g in zip(records, groundings):
-        room = named_room(record.words, rooms)
-        if room is None or g.room == room:
+    for record, g, room in zip(records, groundings, said):
+        if room is None and g.room is not None and any(said) and not (
+                {w.strip().lower() for w in record.words} & ROOM_WORDS):
+            out.append(replace(g, room=None))  # a guess where another chunk names the room
+        elif room is None or g.room == room:
             out.append(g)
         elif g.room is not None:
             out.append(replace(g, room=room))
@@ -153,11 +161,15 @@ def side_room_groundings(records: Sequence[ChunkRecord], groundings: Sequence[Ch
     ("the room on your right", "take a left into the room") grounded by the floor plan: the room
     joined to the start's through the passage on that side
     (:meth:`~assistant.world.model.Floorplan.room_faced`). Left alone when something said
-    before takes the robot elsewhere first ("the end of the hallway"), or without a world."""
+    before takes the robot elsewhere first ("the end of the hallway"), when the words name a
+    room of the home anywhere ("go out the door, turn left, then go into the living room": the
+    living room, not the room on the left), or without a world."""
     out = list(groundings)
     if world is None:
         return out
     rooms = room_names_of(world)
+    if any(named_room([w.strip().lower() for w in r.words], rooms) is not None for r in records):
+        return out
     generic: list[int] = []  # earlier room phrases that name no room ("the room")
     for i, (record, g) in enumerate(zip(records, groundings)):
         words = [w.strip().lower() for w in record.words]

@@ -873,3 +873,28 @@ def test_a_room_question_is_answered_by_its_order(services, tmp_path, answer, ro
     m2.handle("go to the desk")
     again = m2.handle("hmm")  # the question again, with the rooms it offered
     assert again.reply == "Sorry, which room — the studio or the office?"
+
+
+def test_an_errand_of_two_rooms_is_done_step_by_step(services, tmp_path):
+    said = []
+    fetcher = StandInFetcher(furniture=None)
+    m = make(services, tmp_path, fetcher, said)
+    turn = m.handle("go to the living room, then after that go to the bedroom")
+    assert turn.reply == "Going to the living room. After that, the bedroom."
+    final = m.wait(30)  # waits for the last step too
+    assert fetcher.texts == ["go to the living room", "go to the bedroom"]
+    assert "Going to the bedroom." in said and final is not None and not m.steps
+    # a route told in one go stays one command, its room the one named ("turn left" is no room)
+    m.handle("go out the door, turn left, then go into the living room and stop at the couch")
+    m.wait(30)
+    assert fetcher.texts[-1].startswith("go out the door") and len(fetcher.texts) == 3
+
+
+def test_stopping_an_errand_drops_its_steps(services, tmp_path):
+    fetcher = StandInFetcher(furniture=None, hold=True)
+    m = make(services, tmp_path, fetcher)
+    m.handle("go to the living room then go to the bedroom")
+    assert m.steps == ["go to the bedroom"]
+    m.handle("stop")
+    m.wait(10)
+    assert not m.steps and fetcher.texts == ["go to the living room"]

@@ -70,6 +70,18 @@ def test_a_room_named_only_in_a_place_phrase_is_the_target_room(language, corpus
     assert plan.room == "meeting room" and plan.object == "laptop"
 
 
+@pytest.mark.parametrize("text, room", [
+    # a side said before the room named: the room named ("turn left" was guessed the bedroom)
+    ("go out the door, turn left, then go into the living room and stop at the couch", "living room"),
+    ("turn right and go into the bedroom", "bedroom"),
+    ("go into the room on your right", "living room"),  # no room named: the side decides
+])
+def test_a_room_named_anywhere_beats_a_guess(language, corpus_labels, all_worlds, text, room):
+    fitted = CombinedGrounder().fit(corpus_labels.records, corpus_labels.groundings)
+    parser = CommandParser(language, fitted, all_worlds["apartment"])
+    assert parser.parse(text).plan.room == room
+
+
 def test_the_room_on_a_side_comes_from_the_floor_plan():
     from assistant.grounding.rooms import side_room_groundings
     from assistant.grounding.types import ChunkGrounding, ChunkRecord

@@ -1,0 +1,44 @@
+"""Errands of several steps: "go to the living room, then go to the bedroom".
+
+One plan has one room: the grounders read "go to the office, after that go to the bedroom and stop
+at the bed" as a single destination and the robot did only one of the two. A request whose parts
+(split at "then", "after that", "afterwards", "and then", a full stop or a semicolon) each send
+the robot to a room, one after another and each to another room than the one before, is read as
+that many steps; the chat carries them out in turn (``DialogueManager``). A route told in one
+go ("go out the door, turn left, then go into the kitchen") has parts that name no room: it
+stays one command, as the grounders read it.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+__all__ = ["split_steps", "STEP_BREAK"]
+
+#: where one step of an errand ends and the next begins
+STEP_BREAK = re.compile(r"\s*,?\s*\b(?:and then|then|after that|afterwards|after this|and after that)\b\s*,?\s*"
+                        r"|\s*[.;!]+\s+")
+
+
+def split_steps(text: str, room_of: Callable[[str], str | None]) -> list[str]:
+    """The steps of a request (see the module), or ``[text]`` when it is one. ``room_of(part)``
+    gives the room a part sends the robot to, or None. A part that only names the room ("then
+    the bedroom") becomes "go to the bedroom"."""
+    parts = [p.strip(" ,") for p in STEP_BREAK.split(text.strip().rstrip(".!")) if p and p.strip(" ,")]
+    if len(parts) < 2:
+        return [text]
+    rooms = [room_of(p) for p in parts]
+    if any(r is None for r in rooms) or any(a == b for a, b in zip(rooms, rooms[1:])):
+        return [text]
+    return [p if _has_verb(p) else f"go to the {room}" for p, room in zip(parts, rooms)]
+
+
+_VERBS = ("go", "come", "head", "walk", "drive", "move", "get", "take", "bring", "find", "look", "check",
+          "stop", "wait", "turn", "enter", "visit", "return", "back", "into", "through", "to")
+
+
+def _has_verb(part: str) -> bool:
+    words = part.lower().split()
+    return any(w in _VERBS for w in words[:4])
+
