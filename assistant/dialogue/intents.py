@@ -70,7 +70,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"^(stop|halt) (it|now|please)\b")),
     ("cancel", (r"^(?:(?:actually|ok|okay|oh|no|sorry|well|um|uh|so|ah) )*(please )?(cancel|never ?mind|forget (it|that|"
                 r"about it)|abort|no never ?mind)\b",
-                r"^(no )?(it doesnt|it does not) matter\b")),
+                r"^(no )?(it doesnt|it does not) matter\b",
+                # the thing turned up, or the person lets it go: "no worries", "it's ok, he's found them"
+                r"^(?:(?:oh|ok|okay|ah|well|no|actually) )*(no worries|dont worry|do not worry|dont bother|no bother|"
+                r"(?:its|it is) (?:ok|okay|alright|fine)(?: now)?(?: (?:i|ive|he|hes|she|shes|we|weve|they|theyve) "
+                r"(?:have |has )?found (?:it|them))?|(?:i|ive|he|hes|she|shes|we|weve|they|theyve) (?:have |has )?found (?:it|them)"
+                r"(?: now| already)?)(?: thanks| thank you| robot)*$")),
     # a request not to do something: never carried out as the request itself
     ("dont", (r"^(please |no |no no )?(dont|do not|never|better not)( you)? (go|bring|fetch|get|come|drive|move|turn|"
               r"look|search|touch|enter|leave)\b",)),
@@ -84,20 +89,28 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"\bhow (can|could) you help( me)?\b", r"\bwhat (are|is) you (for|good at)\b", r"\bhow do(es)? (this|you) work\b",
               r"\bwhat do you (understand|know how to do)\b", r"^(commands|options)$")),
     ("which_home", (r"\b(which|what) (home|house|world|flat|apartment|place) (am i|are we|is this)\b",
-                    r"\bwhere am i\b", r"\bwhere are we\b", r"\bwhich rooms\b", r"\bwhat rooms\b")),
+                    r"\bwhere am i\b", r"\bwhere are we\b", r"\bwhich rooms\b", r"\bwhat rooms\b",
+                    r"\bhow many rooms\b")),
     ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
     # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
-    ("robot_place", (r"^" + ADDRESS + r"(?:so |and |please tell me |tell me )?(where are you|where you are|where are you at|"
+    ("robot_place", (r"^(?:(?:uh|um|er|well|so|and|oh|ok|okay) )*" + ADDRESS + r"(?:so |and |please tell me |tell me )?(where are you|where you are|where are you at|"
                      r"(?:which|what) room (?:are you|you are|you|are you in|you are in|you in)(?: in)?|where have you got to|"
-                     r"where did you end up|where are you standing)( now| right now| robot| at the moment| exactly)*$",)),
+                     r"where did you end up|where are you standing|where exactly are you|where are you exactly)"
+                     r"( now| right now| robot| at the moment| exactly)*$",
+                     # "which table are you at?": where it stands, by the furniture near it
+                     r"^(?:(?:so|and|ok|okay) )*(?:which|what) (?:table|couch|sofa|chair|bed|desk|one|piece of furniture|"
+                     r"furniture|thing) (?:are you|you are|you) (?:at|by|near|next to|in front of|beside|facing|looking at)"
+                     r"(?: now| right now| exactly)?$")),
     ("why_stopped", (r"\bwhy (?:did|have|has|do) you (?:just )?(?:stop|stopped|stopping|give up|gave up|come back)\b",
                      r"\bwhy (?:are you|you) (?:going|driving|moving|doing that|doing this|going there|turning)\b",
                      r"\bwhy (?:are you|you) (?:not moving|stopped|stopping|standing still)\b", r"^why (?:you )?stop(?:ped)?\b",
                      r"\bwhy (?:didnt|did not|dont|do not|you not) (?:you )?(?:bring|fetch|get|find|finish|go)\b")),
-    ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can) you see(?: now| there| here| robot)*$",
-                  r"^" + ADDRESS + r"(?:so |and |now )?what is (?:near|around|next to|in front of|close to) you(?: now)?$",
+    ("what_see", (r"^" + ADDRESS + r"(?:so |and |now )?what (?:do|can) you see(?: now| there| here| robot| in front of you|"
+                  r" around you| from there| from where you are| right now)*$",
+                  r"^" + ADDRESS + r"(?:so |and |now )?what(?:s| is| is there)? (?:near|around|next to|in front of|close to|"
+                  r"by|beside) you(?: now| right now)?$",
                   r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$")),
     ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$",
                 r"^" + ADDRESS + r"(?:so |and )?(?:where are you (?:going|headed|heading|off to)|how long will (?:it|that|you) "
@@ -106,7 +119,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"( now| robot| right now)?$",)),
     ("come_here", (r"^(?:(?:no|ok|okay|oh|please|robot|hey|right|actually) )*" + ADDRESS + r"(please )?(come|come here|"
                    r"come back|come to me|come over here|over here|follow me|come and find me|come back here)"
-                   r"( please| robot| now| here| to me)*$",)),
+                   r"( please| robot| now| here| to me)*$",
+                   r"^(?:(?:ok|okay|now|please|right|and) )*(?:(?:can|could|will|would) you )?(?:go|come|head|drive) back "
+                   r"(?:to )?(?:where you (?:started|were|came from|began)|the start|your start|the beginning|"
+                   r"your starting (?:point|place)|home|to me)(?: please| now| robot)*$")),
     # go on with the task stopped last ("ok, carry on", "you can continue now")
     ("resume", (r"^(?:(?:ok|okay|alright|right|yes|yeah|sorry|fine|oh|actually|well|no) )*(?:you can |please |ok you can )?(?:carry on|"
                 r"continue|keep going|go on|resume|proceed|go ahead and finish|finish (?:it|that|what you were doing)|"
@@ -166,6 +182,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                # a loss told rather than asked: "I can't find my keys", "I've lost my wallet"
                r"\b(cant|can not|cannot|couldnt|could not) find (my|our|the|his|her)\b",
                r"\b(ive|i have|i|weve|we have|we|she|he|has) (lost|misplaced|mislaid)\b",
+               r"\b(lost|misplaced|mislaid|cant find|cannot find) (my|his|her|our|their|the) [a-z]+",
                r"\bhelp me (find|look for)\b", r"^(you|anyone|anybody|has anyone|has anybody) seen\b",
                # about the thing just talked of: "which room is it in?", "where exactly?", "which table exactly?"
                r"^(?:(?:and|so|ok|okay|but) )*which (room|table|one|place|chair|bit of the room) (is|are) (it|they|that|"
@@ -194,7 +211,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"brilliant|excellent|wonderful|lovely|clever)( robot| thanks| thank you)*$",
                 r"^(ok |okay |oh )?(good|great|nice|cool|super|lovely|brilliant|excellent|good good)( robot| thanks| thank you)*$",
                 r"^(youre|you are) (so |very |a )?(clever|smart|good|great|helpful|brilliant)\b")),
-    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b",)),
+    ("thanks", (r"\b(thank you|thanks|cheers|great job|well done|good job)\b", r"^ta( very much| robot| love| dear)?$")),
+    # an acknowledgement with nothing asked ("ok, that's fine", "alright then", "cool cool")
+    ("ack", (r"^(?:(?:ok|okay|oh|ah|right|alright|all right|cool|fine|good|great) )*(?:thats|that is|its|it is) "
+             r"(?:fine|ok|okay|alright|good|great|grand)(?: then| thanks| thank you)*$",
+             r"^(?:ok|okay|alright|all right|right|cool|fine|got it|i see|understood|noted)(?: (?:ok|okay|cool|then|"
+             r"right|fine|got it))+$")),
     ("rude", (r"\b(stupid|idiot|dumb|useless|shut up|hate you|moron|rubbish robot|piece of junk)\b",)),
 ]
 
@@ -282,6 +304,25 @@ def expand_shorthand(text: str) -> str:
                   out, flags=re.IGNORECASE)
 
 
+#: clauses of courtesy that ask nothing ("could you, if it's not too much trouble, look …")
+COURTESIES = re.compile(r"[,;]?\s*\b(?:if (?:it is|its|it's|that is|thats|that's) not too much (?:trouble|bother)(?: for you)?|"
+                        r"if you (?:dont|don't|do not) mind|when you (?:have|get) (?:a|the) (?:moment|minute|second|chance)|"
+                        r"if (?:you can|you could|you would|you please|possible|you have time)|"
+                        r"(?:and )?(?:i|we) (?:would|'d|d) (?:be (?:very |so )?grateful|appreciate it))\b\s*[,;]?",
+                        re.IGNORECASE)
+#: a first sentence of thanks or agreement before a request ("Thank you. Could you please …")
+LEADING_THANKS = re.compile(r"^\s*(?P<lead>(?:ok(?:ay)?,? )?(?:thank you(?: (?:so|very) much)?|thanks(?: a lot| so much)?|cheers|"
+                            r"ta|lovely|great|perfect|good|ok|okay|alright)(?: robot| dear)?)\s*[.!,;]+\s+(?P<rest>\S.*)$",
+                            re.IGNORECASE)
+
+
+def drop_courtesies(text: str) -> str:
+    """``text`` without the clauses of :data:`COURTESIES` ("And then, if it is not too much
+    trouble, could you look at the table" → "And then could you look at the table")."""
+    out = COURTESIES.sub(" ", text or "")
+    return re.sub(r"\s+([,.?!])", r"\1", re.sub(r"\s{2,}", " ", out)).strip() or (text or "")
+
+
 def normalise(text: str) -> str:
     """Lower case, apostrophes dropped ("where's" → "wheres"), other punctuation to spaces."""
     t = (text or "").lower().replace("’", "'").replace("'", "")
@@ -296,14 +337,31 @@ class Intent:
     text: str  # the normalised utterance
 
 
+#: said before a sentence without adding to it ("uh what are you doing", "well where are you")
+FILLERS = re.compile(r"^(?:(?:uh|um|er|erm|hmm|hm|ah|oh|well|so|like|right|now|okay so|ok so|and|but|say|listen|"
+                     r"excuse me|sorry|hey|hi|hello|robot)\s+)+")
+#: said after it to the listener ("where are you now, dear?"): always dropped
+VOCATIVES = re.compile(r"(?:\s+(?:dear|dearie|love|darling|sweetie|honey|mate|buddy|pal|my friend|my dear))+$")
+#: said after it, dropped when the whole sentence matched no rule
+CLOSINGS = re.compile(r"(?:\s+(?:robot|then|please|for me|thanks|thank you))+$")
+
+
 def classify(text: str) -> Intent:
-    """The first rule that matches; ``command`` when none does (the parser decides)."""
+    """The first rule that matches; ``command`` when none does (the parser decides). When none
+    does, the utterance without its leading fillers and closing vocatives (:data:`FILLERS`,
+    :data:`VOCATIVES`) is tried too: "uh what are you doing", "where are you now, dear"."""
     norm = normalise(text)
+    norm = VOCATIVES.sub("", norm) or norm
     if not norm:
         return Intent("empty", norm)
     for name, patterns in _COMPILED:
         if any(p.search(norm) for p in patterns):
             return Intent(name, norm)
+    bare = CLOSINGS.sub("", FILLERS.sub("", norm))
+    if bare and bare != norm:
+        for name, patterns in _COMPILED:
+            if any(p.search(bare) for p in patterns):
+                return Intent(name, bare)
     return Intent("command", norm)
 
 
@@ -344,7 +402,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see"})
+                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see", "ack"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -28,7 +28,8 @@ from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distin
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         in_place_slot, options_named, unused_mentions, with_articles)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        expand_shorthand, ordinal_choice, teach_phrase, told_place, where_check_parts)
+                                        LEADING_THANKS, drop_courtesies, expand_shorthand, ordinal_choice, teach_phrase,
+                                        told_place, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import ObjectMemory
@@ -196,7 +197,15 @@ class DialogueManager:
                               f"{error}). Please say it another way.", "none", "failed", start)
 
     def _handle(self, text: str, start: float) -> Turn:
-        text = with_articles(expand_shorthand(text), self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
+        text = with_articles(expand_shorthand(drop_courtesies(text)), self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
+        lead = LEADING_THANKS.match(text)
+        if lead is not None and classify(lead.group("rest")).name not in ("thanks", "ack", "praise", "empty"):
+            # "Thank you. Could you please stop at the bedside table?": the request after the thanks
+            turn = self._handle(lead.group("rest"), start)
+            if re.search(r"thank|cheers|^ta\b", lead.group("lead"), re.IGNORECASE) and turn.reply:
+                turn.reply = f"You're welcome. {turn.reply}"
+                self.last_said = turn.reply
+            return turn
         intent = classify(text)
         name = intent.name
         if name == "empty":
@@ -250,6 +259,12 @@ class DialogueManager:
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
         if name == "bye":  # the conversation ends (the REPL leaves on this action)
             return self._turn(text, name, "Goodbye.", "leave", "answered", start)
+        if name == "come_here" and re.search(r"\b(started|start|beginning|began|starting|came from)\b", intent.text):
+            # "go back to where you started": the room it set out from
+            here = self.world.floorplan.room_at(self.world.start.x, self.world.start.y)
+            room = getattr(here, "name", here)
+            if room:
+                return self._command(f"go to the {room}", start, original=text)
         if name in SOCIAL_REPLIES:
             return self._turn(text, name, SOCIAL_REPLIES[name], start=start)
         if name == "robot_place":
@@ -576,7 +591,7 @@ class DialogueManager:
             self.pending = {"kind": "confirm", "command": fetch_command_text(related, other.phrase, other.room),
                             "object": related}
             return self._turn(text, intent.name, f"I haven't seen {some(obj)}, but {said}. Is that what you mean? "
-                              f"Shall I go and get {it_them(related)}?", "answer", "answered", start, object=obj,
+                              f"Shall I go over to {it_them(related)}?", "answer", "answered", start, object=obj,
                               related=related, source="memory")
         if self.services.search_mode == "sensed":
             return self._search(text, intent.name, obj, style, start)
@@ -591,7 +606,7 @@ class DialogueManager:
         place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", description.rstrip("."), flags=re.I)
         if style == "static":
             self.pending = {"kind": "confirm", "command": f"bring me the {obj} {place}", "object": obj}
-            offer = f" Shall I go and get {it_them(obj)}?"
+            offer = f" Shall I go over to {it_them(obj)}?"
         else:
             offer = ""
         reply = (f"{description} (I haven't seen {it_them(obj)} myself yet — that is from the simulator's map "
@@ -648,7 +663,7 @@ class DialogueManager:
         if agrees:
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
-            reply = f"Yes — {at}. Shall I go and get {it_them(obj)}?"
+            reply = f"Yes — {at}. Shall I go over to {it_them(obj)}?"
         else:
             self.pending = {"kind": "confirm", "command": check, "object": obj}
             reply = f"{'Not as far as I know' if seen.source == 'told' else 'Not when I last looked'}: {at}. " \
@@ -671,7 +686,7 @@ class DialogueManager:
         agrees = sighting.room == room
         said = result.description[:1].lower() + result.description[1:]
         reply = (f"{'Yes' if agrees else 'No'} — {said} (That is from the simulator's map of the home: "
-                 f"I haven't seen {it_them(obj)} myself yet.) Shall I go and get {it_them(obj)}?")
+                 f"I haven't seen {it_them(obj)} myself yet.) Shall I go over to {it_them(obj)}?")
         return self._turn(text, intent.name, reply, "describe", "answered", start, object=obj, source="simulator",
                           agrees=agrees)
 
@@ -1060,9 +1075,10 @@ class DialogueManager:
             if missing is not None:
                 return self._turn(text, "answer", f"There is no {missing} here; the rooms are {rooms}. "
                                   "Which one should I look in?", "clarify", "asked", start, unknown_room=missing)
-            if intent.name == "command" and self._is_request(text):
+            if (intent.name == "command" and self._is_request(text)) or p.get("asked_again"):
                 self.pending = None
-                return None  # a new command replaces the question
+                return None  # a new command replaces the question; asked twice, it is let go
+            p["asked_again"] = True
             return self._turn(text, "answer", f"Sorry, which room — {rooms}?", "clarify", "asked", start)
         if p["kind"] == "which":
             index = self._choose(norm, text, p)

@@ -15,6 +15,7 @@ HELP_TEXT = ("You can send me to your things (\"bring me the mug from the table 
 #: intent → the reply to it (what people say to a robot besides requests)
 SOCIAL_REPLIES = {
     "greet": "Hello! What can I do for you?",
+    "ack": "OK.",
     "thanks": "You're welcome.",
     "praise": "Thank you — I'm glad I could help.",
     "wellbeing": "I'm fine, thank you — ready to help. What can I do for you?",

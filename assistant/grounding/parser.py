@@ -17,6 +17,7 @@ from assistant.grounding.motion import read_motion
 from assistant.grounding.rooms import (first_named_room, named_room_groundings, room_names_of,
                                        side_room_groundings)
 from assistant.grounding.said import said_reference_groundings
+from assistant.rdt import NO_TARGET
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 
 
@@ -115,7 +116,7 @@ class CommandParser:
         if plan.object is None:  # "go to the couch (by the table)": the furniture is the place
             said = said_destination(words, room_names_of(self.world))
             last = plan.nodes[-1] if plan.nodes else None
-            if said is not None and (last is None or (said.referenced and (
+            if said is not None and (last is None or last.target == NO_TARGET or (said.referenced and (
                     last.target != said.target or not last.referenced))):
                 plan.nodes, plan.support, plan.kind = [said], said.support, "static"
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),

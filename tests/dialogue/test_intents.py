@@ -1,6 +1,7 @@
 import pytest
 
-from assistant.dialogue.intents import classify, normalise, ordinal_choice, teach_phrase, told_place, where_check_parts
+from assistant.dialogue.intents import (LEADING_THANKS, classify, drop_courtesies, normalise, ordinal_choice,
+                                        teach_phrase, told_place, where_check_parts)
 
 
 @pytest.mark.parametrize("text,intent", [
@@ -210,3 +211,33 @@ def test_an_unknown_word_is_a_place_only_where_furniture_would_be(text, word, sl
     from assistant.dialogue.clarify import in_place_slot
 
     assert in_place_slot(text.split(), word) is slot
+
+
+@pytest.mark.parametrize("text,intent", [
+    # fillers before, a word to the listener after
+    ("uh what are you doing", "status"), ("well where are you", "robot_place"),
+    ("Where are you now, dear?", "robot_place"), ("where exactly are you", "robot_place"),
+    ("which table are you at", "robot_place"), ("what couch are you by now", "robot_place"),
+    ("what's near you", "what_see"), ("what do you see in front of you", "what_see"),
+    ("whats around you", "what_see"), ("hello dear", "greet"),
+    # going back, counting rooms
+    ("go back to where you started", "come_here"), ("can you go back to the start please", "come_here"),
+    ("how many rooms are there", "which_home"),
+    # acknowledgements and letting it go
+    ("ta", "thanks"), ("ok thats fine", "ack"), ("cool cool", "ack"),
+    ("no worries", "cancel"), ("its ok hes found them", "cancel"), ("it's fine, I found it", "cancel"),
+    # a loss told about someone else
+    ("my husband lost his glasses case again", "where"), ("grandma misplaced her keys", "where"),
+])
+def test_what_a_third_round_of_people_said(text, intent):
+    assert classify(text).name == intent
+
+
+def test_courtesies_are_dropped_and_the_request_kept():
+    assert drop_courtesies("And then, if it is not too much trouble, could you look at the table?") == \
+        "And then could you look at the table?"
+    assert drop_courtesies("go to the bedroom if you don't mind") == "go to the bedroom"
+    assert drop_courtesies("if you can") == "if you can"  # nothing else said: left as it was
+    m = LEADING_THANKS.match("Thank you. Could you please stop at the bedside table?")
+    assert m.group("rest") == "Could you please stop at the bedside table?"
+    assert LEADING_THANKS.match("thanks for finding it") is None

@@ -347,7 +347,7 @@ def test_is_it_there_is_answered_from_memory_or_looked_into(services, tmp_path):
     m.wait(10)
     yes = m.handle("is my mug in the bedroom?")
     assert yes.action == "answer" and yes.reply.startswith("Yes — I saw your mug just now on the table")
-    assert yes.reply.endswith("in the bedroom. Shall I go and get it?")
+    assert yes.reply.endswith("in the bedroom. Shall I go over to it?")
     no = m.handle("is it in the living room?")  # "it": the mug the conversation is about
     assert no.reply.startswith("Not when I last looked: I saw your mug") and no.data["agrees"] is False
     assert no.reply.endswith("Shall I go and check in the living room?")
@@ -898,3 +898,25 @@ def test_stopping_an_errand_drops_its_steps(services, tmp_path):
     m.handle("stop")
     m.wait(10)
     assert not m.steps and fetcher.texts == ["go to the living room"]
+
+
+def test_thanks_before_a_request_and_courtesies_inside_it(services, tmp_path):
+    fetcher = StandInFetcher(furniture=None)
+    m = make(services, tmp_path, fetcher)
+    turn = m.handle("Thank you. Could you please go to the couch?")
+    assert turn.reply == "You're welcome. Going to the living room." and turn.action == "fetch"
+    m.wait(10)
+    turn = m.handle("Go to the bedroom, if it's not too much trouble.")
+    assert turn.reply == "Going to the bedroom." and "trouble" not in str(turn.data)
+    m.wait(10)
+    turn = m.handle("go back to where you started")  # the room it set out from
+    assert turn.action == "fetch" and turn.data["room"] == "hallway"
+    m.wait(10)
+
+
+def test_a_room_question_is_let_go_after_it_was_asked_again(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("bring me the fork").action == "clarify"
+    assert m.handle("hmm").reply.startswith("Sorry, which room")
+    turn = m.handle("hmm")  # not an answer twice: the question is dropped, the words read anew
+    assert not turn.reply.startswith("Sorry, which room") and m.pending is None
