@@ -246,14 +246,25 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
             return k, None
     if plan_object:
         return plan_object, None
-    m = re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
-        re.search(r"\b(?:my|the|your|our|a|an|some|any) ([a-z]+)\b", norm)
+    # someone else's thing, the apostrophe gone: "wheres grandmas glasses", "where is moms phone"
+    owner = re.search(r"\b(?:where(?:s| is| are| r| was| were| did)?|seen|find|found|lost|misplaced|with) "
+                      r"(?:my |our |the )?(?!(?:is|was|has|does|its|this|his|hers|yours|ours|theirs|whats|thats)\b)"
+                      r"[a-z]{2,}s ((?!(?:is|are|in|on|at|by|the|my|a|an)\b)[a-z]+(?: [a-z]+)?)$", norm)
+    if owner is not None:
+        norm = f"the {owner.group(1)}"
+    m = re.search(r"\b(?:my|the|your|our|his|her|their|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
+        re.search(r"\b(?:my|the|your|our|his|her|their|a|an|some|any) ([a-z]+)\b", norm)
     if m:
         noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on|anywhere|somewhere|everywhere|around|"
                       r"lately|recently|today|yesterday|here|there|too|at all)\b", "", m.group(1)).strip()
         found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
-        meant = known_spelling(noun, known) if found is not None else None
-        if meant is not None:  # "wheres my lapptop": the laptop
+        meant = None
+        if found is not None:  # "wheres my lapptop": the laptop; "my glasess": the glasses
+            from assistant.world.catalogue import load_catalogue
+
+            words = load_catalogue().object_words()  # every object's name and other words → its name
+            meant = known_spelling(noun, known) or words.get(known_spelling(noun, sorted(words)) or "")
+        if meant is not None:
             return meant, None
         if found is not None:  # any thing can be asked about (issue 16)
             said = plural(found.kind)  # a thing the catalogue does not know keeps its number: "my slippers"

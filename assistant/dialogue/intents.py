@@ -143,6 +143,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                       r"breakfast|food|a sandwich|something to eat|a drink)\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b",
                       r"\b(battery|batteries|charge level|charged|charging|power level)\b")),
+    # doubt about the last answer, or a request to look once more: "are you sure?", "check again"
+    ("again", (r"^(?:(?:but|and|so|hmm|really|oh) )*are you (?:sure|certain|positive)(?: (?:about that|its (?:not )?there|"
+               r"theyre (?:not )?there|it is (?:not )?there))?$",
+               r"^(?:(?:can|could|would|will) you |please )*(?:check|look|search|have a look|take a look|go and look|"
+               r"go and check|look for (?:it|them))(?: once)? again(?: please| for me)*$",
+               r"^(?:please )?(?:check|look) (?:once )?more$", r"^really$")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
                    r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
                    r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",
@@ -190,6 +196,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"^(?:(?:and|so|ok|okay|but) )*(which|what) (room|table|place) (is|are) (my|the|our|his|her) [a-z]+"
                r"(?: [a-z]+)? (in|on|at)$",
                r"^(?:and|what about|how about|and what about) (my|the|our|his|her) [a-z]+(?: [a-z]+)?$",
+               r"^(?:and|what about|how about|and what about) (?:in|inside|on) (?:the|my|our) [a-z]+(?: [a-z]+)?$",
+               r"^(?:(?:and|so|well|ok) )*did you (?:find|see|spot) (?:it|them|my|the|our|his|her)\b",
+               r"\bwhere exactly (?:is|are) (?:it|they)\b", r"\bdescribe (?:where|it|them)\b",
+               r"\b(?:tell|show) me how to (?:find|get to) (?:it|them)\b",
                r"^(?:(?:and|so|ok|okay|but) )*which (table|room|one)$", r"^(?:(?:and|so|ok|okay|but) )*(where|which (room|table|one|place)) "
                r"(exactly|precisely|then)$")),
     ("bye", (r"^(ok |okay |thanks |thank you |no problem |no problem thanks |cheers )*(bye|goodbye|good bye|bye bye|see you|see ya|quit|exit|good night|"
@@ -198,10 +208,13 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
              r"yes please|go and check|check|sure thing)$",
              # said together: "sure, go ahead", "yes please do", "ok go and get it"
              r"^(yes|yeah|yep|yup|sure|ok|okay|alright|please|of course)( (yes|please|sure|go ahead|do it|please do|"
-             r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not))+$",
+             r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not|check|check it|check please|"
+             r"look|have a look|take a look|go and look|go check|go look|go and see))+$",
              # "cool go there", "you go there now please", "ok go on then"
-             r"^(?:(?:ok|okay|cool|great|good|yes|yeah|sure|alright|fine|then|please|you|now|so) )*(?:go there|go "
-             r"over there|go on then|go on|go for it|off you go)(?: now| please| then| robot)*$")),
+             r"^(?:(?:ok|okay|cool|great|good|yes|yeah|sure|alright|fine|then|please|you|now|so|can you|could you|"
+             r"will you|would you) )*(?:go there|go "
+             r"over there|go on then|go on|go for it|off you go|take me there|show me|"
+             r"show me where|lead the way|lead me there)(?: now| please| then| robot)*$")),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",
             r"^(no|nope|nah|not|not now|not right now|not yet|maybe later|later|no need|its fine|its ok|"
             r"(no )?(just )?leave (it|them)( there| be| alone)?)( thanks| thank you| robot| then| for now)*$")),
@@ -273,6 +286,10 @@ SHORTHAND = {
     "wud": "would", "cn": "can", "abt": "about", "bc": "because", "tmrw": "tomorrow", "thru": "through",
     "bedrm": "bedroom", "livingroom": "living room", "lvngroom": "living room", "diningroom": "dining room",
     "bathrm": "bathroom", "kitchn": "kitchen", "rm": "room", "frnt": "front", "nxt": "next", "tbl": "table",
+    # the small words typed in a hurry (letters swapped or left out)
+    "teh": "the", "hte": "the", "wher": "where", "whre": "where", "wehre": "where", "hwere": "where",
+    "waht": "what", "waht's": "what's", "cna": "can", "yuo": "you", "fnd": "find", "fidn": "find", "adn": "and",
+    "taht": "that", "thier": "their", "pleae": "please", "plase": "please", "pleas": "please",
 }
 #: after these a "2" is "to" and a "4" is "for" ("go 2 the kitchen", "look 4 my keys"); "2 steps" stays a number
 _NUMBER_WORD_NEXT = r"(?=\s+(?:the|my|your|our|his|her|it|me|him|them|there|here|a|an|bed|kitchen|bedroom|office)\b)"
@@ -402,7 +419,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening",
-                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see", "ack"})
+                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see", "ack", "again"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

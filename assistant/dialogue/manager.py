@@ -112,6 +112,7 @@ class DialogueManager:
         self.robot_pose = None  # the robot's pose last reported while a task ran (pose_listener)
         self.steps: list[str] = []  # the errand's steps still to do ("…, then go to the bedroom")
         self._stepping = False  # True while the next step starts (it keeps the steps after it)
+        self.last_offer: dict | None = None  # the last "Shall I go …?" made (see ``pending``)
         self.pending: dict | None = None
         self.synonyms: dict[str, str] = {}
         self.last_said = ""
@@ -119,6 +120,18 @@ class DialogueManager:
         self.worker = TaskWorker(self)
 
     # ------------------------------------------------------------------ helpers
+    @property
+    def pending(self) -> dict | None:
+        """The question the robot's last reply left open (None: none); an offer to go somewhere
+        is kept in ``last_offer`` too, so "take me there" later still finds it."""
+        return self._pending
+
+    @pending.setter
+    def pending(self, value: dict | None) -> None:
+        self._pending = value
+        if value and value.get("kind") == "confirm" and value.get("command"):
+            self.last_offer = value
+
     @property
     def rooms(self) -> list[str]:
         return list(self.world.floorplan.room_names)
@@ -253,6 +266,9 @@ class DialogueManager:
             if turn is not None:
                 return turn
         if name == "yes" and re.search(r"\bthere\b", intent.text) and (last := self._last_object()) is not None:
+            offer = self.last_offer if self.last_offer and self.last_offer.get("object") == last else None
+            if offer is not None:  # "take me there": where the robot said it is
+                return self._command(offer["command"], start, force=True, original=text)
             return self._command(f"bring me the {last}", start, original=text)  # "go there": to the thing talked of
         if name in ("yes", "no"):
             return self._turn(text, name, "OK." if name == "no" else
@@ -267,6 +283,8 @@ class DialogueManager:
                 return self._command(f"go to the {room}", start, original=text)
         if name in SOCIAL_REPLIES:
             return self._turn(text, name, SOCIAL_REPLIES[name], start=start)
+        if name == "again":
+            return self._again(text, intent, start)
         if name == "robot_place":
             return self._robot_place(text, start)
         if name == "why_stopped":
@@ -528,7 +546,35 @@ class DialogueManager:
         reply = furniture_answer(furniture, self.rooms, kind, what, room)
         return self._turn(text, "furniture", reply, "answer", "answered", start, room=room, asked=what or None)
 
+    def _again(self, text: str, intent, start: float) -> Turn:
+        """"are you sure?": what the robot goes by, and an offer to look again; "check again",
+        "look again": it searches again for the thing last talked of."""
+        obj = self._last_object()
+        if obj is None:
+            return self._turn(text, intent.name, "Which of your things shall I look for? Ask me, for example, "
+                              "\"where is my mug?\"", "clarify", "asked", start)
+        if re.match(r"^(?:(?:but|and|so|hmm|oh) )*(?:are you|really)", intent.text):
+            seen = self.memory.recall(self.world.name, obj)
+            if seen is not None:
+                said = self._seen_at(obj, seen)
+                self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
+                                "object": obj}
+                return self._turn(text, intent.name, f"{said[:1].upper()}{said[1:]} — that's what I go by. Shall I "
+                                  "go and check?", "answer", "answered", start, object=obj, source="memory")
+            self.pending = {"kind": "confirm", "search": obj, "object": obj}
+            return self._turn(text, intent.name, f"I haven't seen your {obj} myself. Shall I look for "
+                              f"{it_them(obj)} again?", "answer", "answered", start, object=obj)
+        return self._search(text, intent.name, obj, "static", start,
+                            lead=f"OK, I'll look for your {obj} again.")
+
     def _where(self, text: str, intent, start: float) -> Turn:
+        follow = re.fullmatch(r"(?:and|what about|how about|and what about)(?: in| inside| on)? (?:the|my|our) "
+                              r"(?P<place>[a-z]+(?: [a-z]+)?)", intent.text)
+        last = self._last_object() if follow else None
+        if last is not None and (follow["place"] in self.rooms or follow["place"] in COMMON_ROOMS
+                                 or unknown_room_named(follow["place"].split(), self.world) is not None):
+            # "and the meeting room?", "what about in the bedroom?": the thing last talked of, there
+            return self._where_check(text, Intent("where_check", f"is the {last} in the {follow['place']}"), start)
         parts = [p.strip() for p in re.split(r"\b(?:and|or)\b", intent.text) if p.strip()]
         named = [o for o in (self._object_in(p)[0] or self._object_in(p)[1] for p in parts) if o]
         if len(parts) > 1 and len(dict.fromkeys(named)) > 1 and self._object_in(parts[0])[0] is not None:
@@ -556,6 +602,23 @@ class DialogueManager:
                     else None  # "how do I get to the couch?": where it is, and an offer to go
                 if place is not None:
                     return place
+                found = matching(self.world.scene(self.scene).furniture, unknown)
+                told_by = re.search(r"\b(between|next to|by|near|beside|behind|in front of|left of|right of|with|"
+                                    r"against|opposite)\b", intent.text)
+                if found and told_by is None:  # "what room is the desk in?": the rooms from the home's map
+                    name = singular(unknown)
+                    rooms = [r for r in self.rooms if any(f.room == r for f in found)]
+                    if len(found) == 1:
+                        self.pending = {"kind": "confirm", "command": f"go to the {name} in the {rooms[0]}",
+                                        "object": None}
+                        reply = f"The {name} is in the {rooms[0]}. Shall I go to it?"
+                    else:
+                        count = NUMBER_WORDS.get(len(found), str(len(found)))
+                        reply = (f"There are {count} {plural(name)}: " + _join(
+                            [f"{NUMBER_WORDS.get(n, str(n)) if n > 1 else 'one'} in the {r}"
+                             for r in rooms for n in [sum(f.room == r for f in found)]]) + ". Tell me which to go "
+                            f"to, for example \"go to the {name} in the {rooms[-1]}\".")
+                    return self._turn(text, intent.name, reply, "answer", "answered", start, furniture=name)
                 return self._turn(text, intent.name, "I look for things, not furniture — ask me \"what's in the "
                                   f"{self.rooms[-1]}?\" or \"where's the {singular(unknown)}?\", or tell me to go to "
                                   "a piece of furniture.", "answer", "answered", start)
@@ -570,7 +633,8 @@ class DialogueManager:
         if seen is not None and style == "static":
             said = self._seen_at(obj, seen)
             here = seen.room is not None and not self.busy and self.robot_room()[0] == seen.room
-            offer = "It's in this room — shall I go over to it?" if here else "Shall I go and check?"
+            its = "They're" if it_them(obj) == "them" else "It's"
+            offer = f"{its} in this room — shall I go over to {it_them(obj)}?" if here else "Shall I go and check?"
             reply = f"{said[:1].upper()}{said[1:]}. {offer}"
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}

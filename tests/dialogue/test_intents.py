@@ -1,6 +1,7 @@
 import pytest
 
-from assistant.dialogue.intents import (LEADING_THANKS, classify, drop_courtesies, normalise, ordinal_choice,
+from assistant.dialogue.intents import (LEADING_THANKS, classify, drop_courtesies, expand_shorthand, normalise,
+                                        ordinal_choice,
                                         teach_phrase, told_place, where_check_parts)
 
 
@@ -241,3 +242,14 @@ def test_courtesies_are_dropped_and_the_request_kept():
     m = LEADING_THANKS.match("Thank you. Could you please stop at the bedside table?")
     assert m.group("rest") == "Could you please stop at the bedside table?"
     assert LEADING_THANKS.match("thanks for finding it") is None
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("yes please check", "yes"), ("sure go ahead", "yes"), ("take me there", "yes"), ("can you go there", "yes"),
+    ("are you sure?", "again"), ("are you sure its not there", "again"), ("can you check again", "again"),
+    ("look again please", "again"), ("did you find it?", "where"), ("what about in the bedroom?", "where"),
+    ("so where exactly is it, describe it for me", "where"), ("what room is the desk in", "where"),
+    ("wher is teh remote", "where"),
+])
+def test_answers_doubts_and_follow_ups(text, intent):
+    assert classify(expand_shorthand(text)).name == intent

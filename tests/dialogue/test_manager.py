@@ -920,3 +920,46 @@ def test_a_room_question_is_let_go_after_it_was_asked_again(services, tmp_path):
     assert m.handle("hmm").reply.startswith("Sorry, which room")
     turn = m.handle("hmm")  # not an answer twice: the question is dropped, the words read anew
     assert not turn.reply.startswith("Sorry, which room") and m.pending is None
+
+
+@pytest.fixture(scope="module")
+def map_services():
+    """Where-answers from the simulator's map (no search), fetches by a stand-in."""
+    from assistant.world import load_world
+
+    s = Services(perception="oracle", search="oracle")
+    s.warm_up(load_world("two-bedrooms-house"), background=False)
+    return s
+
+
+def test_follow_ups_about_the_last_thing_asked(map_services, tmp_path):
+    m = make_in("two-bedrooms-house", map_services, tmp_path, StandInFetcher(furniture="roundtable_1"))
+    assert m.handle("is the fork in the office").reply.startswith("Yes — the fork is in the office")
+    assert m.handle("and the meeting room?").reply.startswith("No — the fork is in the office")
+    assert m.handle("what about in the bedroom?").reply.startswith("No — the fork")
+    assert m.handle("what about the kitchen").reply.startswith("There is no kitchen here")
+    doubt = m.handle("are you sure?")  # it goes by the map: it says so and offers to look
+    assert doubt.reply == "I haven't seen your fork myself. Shall I look for it again?"
+    assert m.handle("no").reply == "OK."
+    there = m.handle("take me there")
+    assert there.action == "fetch" and there.data["object"] == "fork"
+    m.wait(10)
+
+
+def test_a_piece_of_furniture_asked_for_is_placed_by_room(map_services, tmp_path):
+    m = make_in("two-bedrooms-house", map_services, tmp_path, StandInFetcher())
+    assert m.handle("what room is the desk in").reply == "The desk is in the office. Shall I go to it?"
+    assert m.handle("yes please").action == "fetch"
+    m.wait(10)
+    m2 = make_in("hk-studio", map_services, tmp_path, StandInFetcher())
+    reply = m2.handle("which room is the desk in").reply
+    assert reply.startswith("There are") and "in the studio" in reply and "in the office" in reply
+
+
+@pytest.mark.parametrize("asked, meant", [("wheres grandmas glasses", "glasses"), ("where is moms phone", "cell phone"),
+                                          ("where r my glasess", "glasses"), ("wher is teh remote", "remote"),
+                                          ("where is his phoen", "cell phone")])
+def test_other_peoples_things_and_typed_names(map_services, tmp_path, asked, meant):
+    m = make_in("two-bedrooms-house", map_services, tmp_path, StandInFetcher())
+    turn = m.handle(asked)
+    assert turn.data.get("object") == meant, turn.reply
