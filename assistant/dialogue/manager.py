@@ -43,8 +43,10 @@ from assistant.generation import is_are, some
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.objects import article, is_object_word, plural, singular
-from assistant.grounding.rooms import COMMON_ROOMS, unknown_room_named
+from assistant.grounding.rooms import COMMON_ROOMS, ROOM_ALIASES, unknown_room_named
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, furniture_category
+#: every other name of a room ("lounge", "study"): said as a thing, it is no thing
+ROOM_ALIASES_SAID = frozenset(a for aliases in ROOM_ALIASES.values() for a in aliases)
 
 #: a where-question about one place, before its name ("where's the", "how do I get to the")
 PLACE_QUESTION = (r"(?:(?:and|so|ok|okay|um|robot) )*(?:where(?: is| are| s)?|wheres|how (?:do|can) i (?:get|go) to|"
@@ -458,6 +460,14 @@ class DialogueManager:
     def _place_asked(self, text: str, intent, noun: str, start: float) -> Turn | None:
         """A where-question about a room or a piece of furniture: where it is, and an offer to go."""
         room = self._room_in(intent.text)
+        if room is not None and intent.name == "where_dynamic":  # "how do I get to the office?"
+            route = self._room_route(room)
+            if route is None:
+                return self._turn(text, intent.name, f"I'm in the {room} now.", "answer", "answered", start,
+                                  room=room)
+            self.pending = {"kind": "confirm", "command": f"go to the {room}", "object": None}
+            return self._turn(text, intent.name, f"{route} Shall I take you there?", "answer", "answered", start,
+                              room=room)
         if room is not None:
             self.pending = {"kind": "confirm", "command": f"go to the {room}", "object": None}
             rooms = _join(["the " + r for r in self.rooms])
@@ -568,6 +578,10 @@ class DialogueManager:
                             lead=f"OK, I'll look for your {obj} again.")
 
     def _where(self, text: str, intent, start: float) -> Turn:
+        if intent.name == "where_dynamic" and (room := self._room_in(intent.text)) is not None:
+            thing = self._object_in(intent.text)[0]
+            if thing is None or set(thing.split()) <= self._room_words:  # "how do I get to the small room?"
+                return self._place_asked(text, intent, room, start)
         follow = re.fullmatch(r"(?:and|what about|how about|and what about)(?: in| inside| on)? (?:the|my|our) "
                               r"(?P<place>[a-z]+(?: [a-z]+)?)", intent.text)
         last = self._last_object() if follow else None
@@ -602,7 +616,8 @@ class DialogueManager:
                     else None  # "how do I get to the couch?": where it is, and an offer to go
                 if place is not None:
                     return place
-                found = matching(self.world.scene(self.scene).furniture, unknown)
+                found = [f for f in matching(self.world.scene(self.scene).furniture, unknown)
+                         if singular(unknown) in (f.word, f.model, *f.model.split())]  # a dresser is no table
                 told_by = re.search(r"\b(between|next to|by|near|beside|behind|in front of|left of|right of|with|"
                                     r"against|opposite)\b", intent.text)
                 if found and told_by is None:  # "what room is the desk in?": the rooms from the home's map
@@ -619,6 +634,9 @@ class DialogueManager:
                              for r in rooms for n in [sum(f.room == r for f in found)]]) + ". Tell me which to go "
                             f"to, for example \"go to the {name} in the {rooms[-1]}\".")
                     return self._turn(text, intent.name, reply, "answer", "answered", start, furniture=name)
+                if told_by is None:  # "where is the dresser?" in a home with none
+                    return self._turn(text, intent.name, f"There is no {singular(unknown)} in this home — the "
+                                      f"furniture here is {self._furniture_kinds()}.", "answer", "answered", start)
                 return self._turn(text, intent.name, "I look for things, not furniture — ask me \"what's in the "
                                   f"{self.rooms[-1]}?\" or \"where's the {singular(unknown)}?\", or tell me to go to "
                                   "a piece of furniture.", "answer", "answered", start)
@@ -896,6 +914,30 @@ class DialogueManager:
             self.last_said = turn.reply
         return turn
 
+    def _room_route(self, room: str) -> str | None:
+        """The rooms to go through from the robot's room to ``room`` ("From the hallway, go through
+        the living room into the office."), by the floor plan's doors and openings; None when the
+        robot is in that room."""
+        import networkx as nx
+
+        here = self.robot_room()[0]
+        if here == room:
+            return None
+        if here is None:
+            return f"The {room} is one of the rooms here."
+        try:
+            path = nx.shortest_path(self.world.floorplan.room_graph(), here, room)
+        except (nx.NetworkXNoPath, nx.NodeNotFound):
+            return f"I know no way from the {here} into the {room}."
+        through = f" through {_join([f'the {r}' for r in path[1:-1]])}" if len(path) > 2 else ""
+        return f"From the {here}, where I am, go{through} into the {room}."
+
+    def _furniture_kinds(self) -> str:
+        """The kinds of furniture of this home: "beds, a couch, chairs and tables"."""
+        furniture = self.world.scene(self.scene).furniture
+        counts = {k: sum(f.word == k for f in furniture) for k in sorted({f.word for f in furniture})}
+        return _join([plural(k) if n > 1 else f"{article(k)} {k}" for k, n in counts.items()])
+
     def _step_room(self, part: str) -> str | None:
         """The room one step of an errand sends the robot to (:mod:`~assistant.dialogue.steps`):
         of the rooms its words name, the grounded plan's, else the last said ("through the living
@@ -939,7 +981,8 @@ class DialogueManager:
         # the object named in the words when the plan lost it ("get the mug from the table")
         obj = plan.object or (self._object_in(" ".join(str(t).lower() for t in parsed.analysis.tokens))[0]
                               if plan.nodes or plan.room or mentions else None)
-        if obj is not None and set(obj.split()) <= room_words:  # "the inner hall" names a room, not a thing
+        if obj is not None and (set(obj.split()) <= room_words or obj in COMMON_ROOMS or obj in ROOM_ALIASES_SAID):
+            # "the inner hall", "the lounge" name a room, not a thing
             obj = None
         missing = unknown_room_named([str(t).lower() for t in parsed.analysis.tokens], self.world) \
             if plan.room is None else None
@@ -962,10 +1005,9 @@ class DialogueManager:
             if first is not None and first.category is not None and singular(first.said) == first.category \
                     and not any(f.word == first.category for f in furniture):
                 # "get the statue from the bed" in a home with no bed: say so, not "is it a bed?"
-                counts = {k: sum(f.word == k for f in furniture) for k in sorted({f.word for f in furniture})}
-                kinds = _join([plural(k) if n > 1 else f"{article(k)} {k}" for k, n in counts.items()])
                 return self._turn(said, "command", f"There is no {first.category} in this home — the furniture "
-                                  f"here is {kinds}.", "answer", "not_understood", start, unknown=[first.said])
+                                  f"here is {self._furniture_kinds()}.", "answer", "not_understood", start,
+                                  unknown=[first.said])
             word = first.said if first is not None else nouns[0]
             suggest = first.category if first is not None else None
             self.pending = {"kind": "word", "word": word, "text": text, "original": said, "suggest": suggest}
@@ -1071,7 +1113,7 @@ class DialogueManager:
             for o, phrase in zip(options, said_options):
                 o["phrase"] = phrase.replace("the one ", f"the {word} ", 1)
         count = NUMBER_WORDS.get(len(items), str(len(items)))
-        reply = f"There are {count} {shown or word}s in the {room} — {_join(said_options, 'or')}?"
+        reply = f"There are {count} {plural(shown or word)} in the {room} — {_join(said_options, 'or')}?"
         self.pending = {"kind": "which", "word": word, "room": room, "object": obj, "options": options,
                         "text": text, "original": said, "asked": reply}
         return self._turn(said, "command", reply, "clarify", "asked", start, options=options, object=obj)

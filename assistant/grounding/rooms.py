@@ -32,6 +32,29 @@ COMMON_ROOMS = ("kitchen", "bathroom", "bedroom", "living room", "dining room", 
                 "nursery", "playroom", "pantry", "porch", "studio", "meeting room", "family room",
                 "sitting room", "lounge", "toilet", "utility room", "spare room", "cellar")
 
+#: other names people give a room → the room name a home's floor plan uses: a home without a room
+#: of the other name ("the sitting room" in a home with a living room) takes it as its own
+ROOM_ALIASES = {
+    "living room": ("sitting room", "lounge", "front room", "family room", "living area", "lounge room", "tv room",
+                    "sitting area", "drawing room", "parlour", "parlor"),
+    # not "hall" or "corridor": said of the way far more often ("to the end of the hall")
+    "hallway": ("entrance hall", "entryway", "foyer"),
+    "office": ("study", "home office", "workroom", "work room"),
+    "bedroom": ("master bedroom", "main bedroom", "bed room", "sleeping room"),
+    "bathroom": ("loo", "toilet", "washroom", "restroom", "wc"),
+    "meeting room": ("conference room", "boardroom"),
+    "small room": ("little room", "box room", "spare room"),
+}
+
+
+def room_aliases(rooms: Iterable[str]) -> dict[str, str]:
+    """Other name → the home's room (:data:`ROOM_ALIASES`), for the ``rooms`` a home has, leaving
+    out any name that is itself one of its rooms (an office and a study are two rooms there)."""
+    own = set(rooms)
+    return {alias: room for room, aliases in ROOM_ALIASES.items() if room in own
+            for alias in aliases if alias not in own and not any(alias in r.split() for r in own)}
+
+
 #: chunk labels that can say where to go (a room *target* phrase, outside or inside a room, the
 #: object phrase and its "in the hallway");
 #: a room named in a reference phrase (ORMRP "past the kitchen") is a landmark, not the target
@@ -66,8 +89,10 @@ def named_room(words: Sequence[str], rooms: Iterable[str], path_words: frozenset
     is named as a goal."""
     said = [w.strip().lower() for w in words if w.strip()]
     found: list[tuple[int, int, str, int]] = []  # (start, -length, room, end)
-    for room in rooms:
-        parts = room.split()
+    rooms = list(rooms)
+    names = [(room, room) for room in rooms] + [(alias, room) for alias, room in room_aliases(rooms).items()]
+    for name, room in names:
+        parts = name.split()
         n = len(parts)
         for i in range(len(said) - n + 1):
             if said[i:i + n] == parts:
@@ -142,7 +167,9 @@ def unknown_room_named(words: Sequence[str], world) -> str | None:
     rooms = set(room_names_of(world))
     if not rooms:
         return None
-    other = [r for r in COMMON_ROOMS if r not in rooms and not any(r in mine.split() for mine in rooms)]
+    aliases = room_aliases(rooms)
+    other = [r for r in COMMON_ROOMS if r not in rooms and r not in aliases
+             and not any(r in mine.split() for mine in rooms)]
     return named_room(words, other, PATH_WORDS - {"from", "of"})
 
 

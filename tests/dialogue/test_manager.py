@@ -301,8 +301,7 @@ def test_a_thing_wanted_with_no_place_is_looked_for_when_the_person_does_not_kno
 @pytest.mark.parametrize("said, reply", [
     ("where's the bed", "The bed is in the bedroom. Shall I go to it?"),
     ("where is the kitchen", "There is no kitchen here; the rooms are the hallway, the living room and the bedroom."),
-    ("how do I get to the bedroom", "The bedroom is one of the rooms here (the hallway, the living room and the "
-                                    "bedroom). Shall I go there?"),
+    ("how do I get to the bedroom", "From the hallway, where I am, go into the bedroom. Shall I take you there?"),
 ])
 def test_where_a_room_or_a_piece_of_furniture_is(services, tmp_path, said, reply):
     m = make(services, tmp_path, StandInFetcher())
@@ -756,8 +755,8 @@ def test_what_do_you_see_go_there_and_the_way_to_a_room(services, tmp_path):
     go = m.handle("cool go there")
     assert go.action == "fetch" and go.data["object"] == "mug"
     m.wait(10)
-    way = m.handle("how do I get to the bedroom from here?")
-    assert way.reply.startswith("The bedroom is one of the rooms here")
+    way = m.handle("how do I get to the bedroom from here?")  # the robot is there
+    assert way.reply == "I'm in the bedroom now."
 
 
 def test_no_arm_is_said_to_bring_requests_only_and_a_thing_corrected(services, tmp_path):
@@ -963,3 +962,17 @@ def test_other_peoples_things_and_typed_names(map_services, tmp_path, asked, mea
     m = make_in("two-bedrooms-house", map_services, tmp_path, StandInFetcher())
     turn = m.handle(asked)
     assert turn.data.get("object") == meant, turn.reply
+
+
+def test_rooms_by_other_names_routes_and_furniture_the_home_lacks(map_services, tmp_path):
+    m = make_in("two-bedrooms-house", map_services, tmp_path, StandInFetcher(furniture=None))
+    turn = m.handle("go to the lounge")
+    assert turn.reply == "Going to the living room." and turn.data.get("object") is None
+    m.wait(10)
+    assert m.handle("go to the settee").reply.startswith("There are two couches in the living room")
+    assert m.handle("never mind").action == "none"
+    assert m.handle("what about the dresser").reply.startswith("There is no dresser in this home")
+    route = m.handle("how do I get to the office from here").reply
+    assert route.startswith("From the living room, where I am, go") and route.endswith(
+        "into the office. Shall I take you there?")
+    assert m.handle("how do I get to the living room").reply == "I'm in the living room now."

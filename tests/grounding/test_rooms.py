@@ -97,3 +97,16 @@ def test_the_room_on_a_side_comes_from_the_floor_plan():
     before = [ChunkRecord("ORMTP", ("go", "to", "the", "end", "of", "the", "hall"), ("VB",) * 7)]
     assert side_room_groundings(before + records, [ChunkGrounding()] + guess,
                                 load_world("one-bedroom-house"))[1].room == "bedroom"
+
+
+def test_other_names_of_a_room_name_the_homes_room(all_worlds):
+    from assistant.grounding.rooms import named_room, room_aliases, room_names_of, unknown_room_named
+
+    rooms = room_names_of(all_worlds["two-bedrooms-house"])
+    assert named_room("go to the sitting room".split(), rooms) == "living room"
+    assert named_room("into the lounge please".split(), rooms) == "living room"
+    assert named_room("go to the conference room".split(), rooms) == "meeting room"
+    assert unknown_room_named("go to the sitting room".split(), all_worlds["two-bedrooms-house"]) is None
+    # "hall" is part of the inner hall's name there: no other name of the hallway
+    assert "hall" not in room_aliases(rooms)
+    assert unknown_room_named("go to the kitchen".split(), all_worlds["two-bedrooms-house"]) == "kitchen"
