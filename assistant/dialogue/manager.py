@@ -449,8 +449,15 @@ class DialogueManager:
         return self.worker.wait(timeout)
 
     def close(self, timeout: float = 10.0) -> None:
-        """Stop a running task and wait for it (end of a conversation)."""
+        """Stop a running task and wait for it, and for the models still loading in the
+        background (end of a conversation): a process that ends while a thread is inside
+        open3d's or scikit-learn's native code can abort ("terminate called without an active
+        exception", seen once after a short piped chat)."""
+        self.stop()
         self.worker.close(timeout)
+        wait_warm = getattr(self.services, "wait_warm", None)
+        if wait_warm is not None:
+            wait_warm(timeout)
 
     # ------------------------------------------------------------------ where / how
     def _object_in(self, norm: str, plan_object: str | None = None) -> tuple[str | None, str | None]:
