@@ -224,6 +224,9 @@ class TaskWorker:
             turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before, said=job.said)
             if pending is not None:
                 c.pending = pending
+            if turn.reply.startswith("Done — ") and c.last_said == turn.reply[len("Done — "):][:1].upper() + \
+                    turn.reply[len("Done — ") + 1:]:
+                turn.reply = "Done."  # "I'm in the bedroom." was said a moment ago
             return turn
         except Exception as error:  # a bug here must still end the task with a reply
             return Turn(text, "error", f"Sorry, something went wrong inside me after the {job.kind} "

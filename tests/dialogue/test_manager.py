@@ -818,6 +818,7 @@ def test_the_next_task_starts_where_the_last_one_left_the_robot(services, tmp_pa
     m.handle("go to the bedroom")
     first = m.wait(120)
     assert first.outcome == "success" and m.robot_room()[0] == "bedroom"
+    assert first.reply == "Done."  # "I'm in the bedroom." was said as it went in, not said twice
     x, y, heading = first.data["final_pose"]
     m.handle("turn around")
     turned = m.wait(60)
