@@ -106,11 +106,11 @@ class Fetcher:
         # way becomes an ``objects_seen`` event for the memory
         detector = SimObjectDetector.for_scene(w.scene(scene), seed=seed)
         task = FetchTask(self.policies, object_detector=detector)
-        with open_robot(robot, w, scene, seed=seed, noise=self.noise, start=start) as bot:
+        with open_robot(robot, w, scene, seed=seed, noise=self.noise, start=start, clear=True) as bot:
             try:
                 stoppable = StoppableRobot(bot, stop, on_pose)
                 ctx = TaskContext.start(w, stoppable, source, max_sim_seconds=self.max_sim_seconds,
-                                        on_event=on_event)
+                                        on_event=on_event, look_first=start is not None)
                 outcome = task.run(ctx, plan)
             except Stopped:
                 stoppable.report_pose()

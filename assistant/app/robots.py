@@ -26,13 +26,16 @@ def spec_world(spec: str) -> str | None:
     return parsed.argument.partition(":")[0] or None
 
 
-def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = True, start=None):
+def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = True, start=None,
+               clear: bool = False):
     """A new, unconnected robot for ``spec`` (use it in a ``with`` block), given the use case's
     home options (:data:`~assistant.robot.factory.HOME_OPTIONS`; each adapter takes those it
     needs): ``world`` (a :class:`~assistant.world.World`) in ``scene``, starting at ``start``
     (default: the world's start pose), with odometry noise when ``noise`` (the localizer
-    corrects it) and ``seed``. A robot object (not a spec: a replay made by the caller) is
-    returned as it is."""
+    corrects it) and ``seed``. ``clear``: a simulated robot starting at ``start`` (where an
+    earlier task left it) starts backed off from anything it touches there
+    (:func:`~assistant.sim.kinematics.clear_start`). A robot object (not a spec: a replay made by
+    the caller) is returned as it is."""
     if not isinstance(spec, str):
         return spec
     parsed = parse_robot_spec(spec)
@@ -40,4 +43,8 @@ def open_robot(spec: str, world, scene: str, *, seed: int = 0, noise: bool = Tru
     if named is not None and named != world.name:
         raise AssistantError(f"the robot {parsed} is in the {named} home but the task is in the {world.name}; "
                              f"give --world {named} or --robot sim")
+    if clear and start is not None and parsed.scheme == "sim":  # where an earlier task left it
+        from assistant.sim.kinematics import clear_start
+
+        start = clear_start(world, scene, start)
     return make_robot(parsed, world=world, scene=scene, start=start, seed=seed, noise=noise)

@@ -159,11 +159,11 @@ class Finder:
         detector = SimObjectDetector.for_scene(world.scene(scene), miss_rate=miss_rate, seed=seed)
         source = make_furniture_source(perception, world, scene,
                                        detector=self.furniture_detector if perception == "sensed" else None)
-        with open_robot(robot, world, scene, seed=seed, noise=self.noise, start=start) as bot:
+        with open_robot(robot, world, scene, seed=seed, noise=self.noise, start=start, clear=True) as bot:
             stoppable = StoppableRobot(bot, stop, on_pose)
             try:
                 ctx = TaskContext.start(world, stoppable, source, max_sim_seconds=max_sim_seconds,
-                                        on_event=on_event)
+                                        on_event=on_event, look_first=start is not None)
                 return SearchTask(detector, **params).run(ctx, name)
             except Stopped as stopped:
                 raise Stopped(source.furniture()) from stopped

@@ -64,14 +64,23 @@ class TaskContext:
     @classmethod
     def start(cls, world: World, robot, perception: FurnitureSource, *, max_sim_seconds: float,
               on_event: Callable[[str, dict], None] | None = None, localize: bool = True,
-              max_replans: int = 10) -> "TaskContext":
+              max_replans: int = 10, look_first: bool = False) -> "TaskContext":
         """A context for ``robot`` (connected) in ``world``: a depth-obstacle map over the
         floor plan and ``perception``'s furniture, a floor-plan localizer (unless not
         ``localize``) that hands every frame it reads to the map and to the listeners added
-        with :meth:`add_frame_listener`, and a navigator over both."""
+        with :meth:`add_frame_listener`, and a navigator over both. ``look_first``: the robot
+        turns once on the spot before anything else, its depth frames going to the obstacle map
+        — a robot that starts where an earlier task left it, between a couch and a table,
+        otherwise plans its first path through them (it knows rooms, not furniture) and bumps
+        into one (the disc turns on the spot without touching anything); it ends facing the way
+        it started, so "turn around" after it turns from where the last task left it."""
         obstacles = DepthObstacles(world, entities=perception.furniture)
         localizer = FloorplanLocalizer(world, listeners=[obstacles.add_frame]) if localize else None
         navigator = Navigator(world, obstacles.occupancy, localizer=localizer, max_replans=max_replans)
+        if look_first:
+            heading = navigator.pose(robot).theta
+            navigator.look_around(robot, lambda frame, pose: obstacles.add_frame(frame, pose) < 0)
+            navigator.follower.turn_to(robot, heading, localizer=localizer)
         return cls(world, robot, perception, obstacles, navigator, localizer, float(max_sim_seconds),
                    on_event, robot.odometry().timestamp_s)
 

@@ -259,3 +259,19 @@ class DiffDriveBase:
             ds = ds + sigma_s * e_s
             dtheta = dtheta + sigma_t * e_t
         self._state.odometry = self._arc(self._state.odometry, ds, dtheta)
+
+
+def clear_start(world: World, scene: str, pose: Pose2D, radius_m: float = ROBOT_RADIUS_M,
+                margin_m: float = 0.05, max_back_m: float = 0.6, step_m: float = 0.05) -> Pose2D | None:
+    """``pose``, or the nearest pose straight behind it (same heading, ``step_m`` at a time, up to
+    ``max_back_m``), where the robot's disc keeps ``margin_m`` from every obstacle; None when
+    there is none. A task that ended against a piece of furniture (a bump stops the disc
+    touching it) leaves the robot where a new simulated robot cannot start, or bumps at its
+    first move: the next task starts backed off, as a real robot backs off a bumper hit."""
+    obstacles = Obstacles.from_world(world, world.scene(scene).name)
+    back = np.array([-np.cos(pose.theta), -np.sin(pose.theta)])
+    for k in range(int(round(max_back_m / step_m)) + 1):
+        x, y = pose.x + back[0] * k * step_m, pose.y + back[1] * k * step_m
+        if obstacles.disc_collides(x, y, radius_m + margin_m) is None:
+            return Pose2D(float(x), float(y), pose.theta)
+    return None

@@ -163,3 +163,15 @@ def test_the_robot_searches_a_lived_in_home_for_my_keys(apartment):
     assert result.success and result.data["found"], result.message
     assert result.object == "keys" and "living room" in result.message
     assert result.description.environment == "perceived"
+
+
+def test_a_fetch_starts_where_the_last_task_left_the_robot(apartment):
+    """A search ended with the robot against the couch, between it and the coffee table: a
+    robot started there could not start (into the couch) or bumped at once into what it did not
+    know of. It starts backed off, looks around on the spot, and gets out."""
+    from assistant.geometry import Pose2D
+
+    result = Fetcher().fetch("go to the bedroom", apartment, "original", "sensed",
+                             start=Pose2D(5.647, 3.556, -0.6836))
+    assert result.success, result.message
+    assert apartment.floorplan.room_at(*result.data["final_pose"][:2]).name == "bedroom"

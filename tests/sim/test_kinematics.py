@@ -117,3 +117,20 @@ def test_cannot_leave_through_an_open_end(apartment):
     base.step(20.0)
     assert base.bumped_into == "map edge"
     assert base.pose.x >= apartment.floorplan.bounds()[0] + 0.25 - 1e-6
+
+
+def test_a_start_against_furniture_is_backed_off_until_clear():
+    from assistant.geometry import Pose2D
+    from assistant.sim.collision import Obstacles
+    from assistant.sim.kinematics import clear_start
+    from assistant.world import ROBOT_RADIUS_M, load_world
+
+    world = load_world("apartment")
+    obstacles = Obstacles.from_world(world, "original")
+    touching = Pose2D(5.647, 3.556, -0.6836)  # where a search left the robot, against couch_1
+    assert obstacles.disc_collides(touching.x, touching.y, ROBOT_RADIUS_M) is not None
+    clear = clear_start(world, "original", touching)
+    assert clear is not None and clear.theta == touching.theta
+    assert obstacles.disc_collides(clear.x, clear.y, ROBOT_RADIUS_M + 0.04) is None
+    assert clear_start(world, "original", world.start) == world.start  # free: as it was
+    assert clear_start(world, "original", Pose2D(4.5, 3.0, 0.0), max_back_m=0.1) is None  # inside the couch
