@@ -97,7 +97,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
     ("robot_place", (r"^(?:(?:uh|um|er|well|so|and|oh|ok|okay) )*" + ADDRESS + r"(?:so |and |please tell me |tell me )?(where are you|where you are|where are you at|"
                      r"(?:which|what) room (?:are you|you are|you|are you in|you are in|you in)(?: in)?|where have you got to|"
-                     r"where did you end up|where are you standing|where exactly are you|where are you exactly)"
+                     r"where did you end up|where are you standing|where exactly are you|where are you exactly|"
+                     r"(?:what|which) room is this|what room (?:am i|are we) in)"
                      r"( now| right now| robot| at the moment| exactly)*$",
                      # "which table are you at?": where it stands, by the furniture near it
                      r"^(?:(?:so|and|ok|okay) )*(?:which|what) (?:table|couch|sofa|chair|bed|desk|one|piece of furniture|"
@@ -111,7 +112,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                   r" around you| from there| from where you are| right now)*$",
                   r"^" + ADDRESS + r"(?:so |and |now )?what(?:s| is| is there)? (?:near|around|next to|in front of|close to|"
                   r"by|beside) you(?: now| right now)?$",
-                  r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$")),
+                  r"^" + ADDRESS + r"(?:so |and )?what(?:s| is) (?:in front of you|around you)(?: now)?$",
+                  r"^" + ADDRESS + r"(?:so |and )?what(?:s| is)(?: there)? (?:here|in here|around here)(?: now)?$")),
     ("status", (r"^" + ADDRESS + r"(?:are )?you there yet$",
                 r"^" + ADDRESS + r"(?:so |and )?(?:where are you (?:going|headed|heading|off to)|how long will (?:it|that|you) "
                 r"(?:take|be)|are you nearly (?:there|done))(?: now| robot)?$", r"^" + ADDRESS + r"(what are you doing|what are you up to|are you (done|finished|busy|"
@@ -209,11 +211,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
              # said together: "sure, go ahead", "yes please do", "ok go and get it"
              r"^(yes|yeah|yep|yup|sure|ok|okay|alright|please|of course)( (yes|please|sure|go ahead|do it|please do|"
              r"go|go for it|go and check|go and get (it|them)|get (it|them)|why not|check|check it|check please|"
-             r"look|have a look|take a look|go and look|go check|go look|go and see))+$",
+             r"look|have a look|take a look|go and look|go check|go look|go and see|thats it|that is it|thats the one|"
+             r"that one|thats right|that is right|take me to (?:it|them)|take me there|bring me there|show me))+$",
              # "cool go there", "you go there now please", "ok go on then"
              r"^(?:(?:ok|okay|cool|great|good|yes|yeah|sure|alright|fine|then|please|you|now|so|can you|could you|"
              r"will you|would you) )*(?:go there|go "
-             r"over there|go on then|go on|go for it|off you go|take me there|show me|"
+             r"over there|go on then|go on|go for it|off you go|take me there|show me|bring me there|"
              r"show me where|lead the way|lead me there)(?: now| please| then| robot)*$")),
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",
             r"^(no|nope|nah|not|not now|not right now|not yet|maybe later|later|no need|its fine|its ok|"
@@ -290,6 +293,7 @@ SHORTHAND = {
     "teh": "the", "hte": "the", "wher": "where", "whre": "where", "wehre": "where", "hwere": "where",
     "waht": "what", "waht's": "what's", "cna": "can", "yuo": "you", "fnd": "find", "fidn": "find", "adn": "and",
     "taht": "that", "thier": "their", "pleae": "please", "plase": "please", "pleas": "please",
+    "wich": "which", "whcih": "which", "blu": "blue", "gren": "green", "whit": "white",
 }
 #: after these a "2" is "to" and a "4" is "for" ("go 2 the kitchen", "look 4 my keys"); "2 steps" stays a number
 _NUMBER_WORD_NEXT = r"(?=\s+(?:the|my|your|our|his|her|it|me|him|them|there|here|a|an|bed|kitchen|bedroom|office)\b)"

@@ -222,6 +222,9 @@ class DialogueManager:
                 self.last_said = turn.reply
             return turn
         intent = classify(text)
+        if intent.name == "command" and (place := self._bare_place(intent.text)) is not None:
+            text = f"go to the {place}"  # "couch pls", "now the bed": a place said alone, as a request
+            intent = classify(text)
         name = intent.name
         if name == "empty":
             if text.strip():  # something was typed, but no word in it (e.g. "!!! ???")
@@ -267,7 +270,8 @@ class DialogueManager:
             turn = self._resolve(text, intent, start)
             if turn is not None:
                 return turn
-        if name == "yes" and re.search(r"\bthere\b", intent.text) and (last := self._last_object()) is not None:
+        if name == "yes" and re.search(r"\b(there|to it|to them)\b", intent.text) and \
+                (last := self._last_object()) is not None:
             offer = self.last_offer if self.last_offer and self.last_offer.get("object") == last else None
             if offer is not None:  # "take me there": where the robot said it is
                 return self._command(offer["command"], start, force=True, original=text)
@@ -939,6 +943,23 @@ class DialogueManager:
         through = f" through {_join([f'the {r}' for r in path[1:-1]])}" if len(path) > 2 else ""
         return f"From the {here}, where I am, go{through} into the {room}."
 
+    def _bare_place(self, norm: str) -> str | None:
+        """The piece of furniture or room said alone as a request ("couch please", "now the
+        bed", "the blue chair please"), or None; said alone with nothing around it ("couch") it
+        is a question, answered elsewhere."""
+        m = re.fullmatch(r"(?:(?P<lead>now|then|and then|next|and now|ok|okay|um|uh) )*(?:the |my )?"
+                         r"(?P<place>[a-z]+(?: [a-z]+)??)(?P<tail>(?: please| now| then| thanks)+)?", norm)
+        if m is None or not (m["lead"] or m["tail"]):
+            return None
+        place = m["place"]
+        furniture = self.world.scene(self.scene).furniture
+        head = place.split()[-1]
+        if place in self.rooms or any(place == f.model for f in furniture) or (
+                furniture_category(singular(head)) is not None and all(
+                    w in LOOKS or w in {x for f in furniture for x in f.model.split()} for w in place.split()[:-1])):
+            return place
+        return None
+
     def _furniture_kinds(self) -> str:
         """The kinds of furniture of this home: "beds, a couch, chairs and tables"."""
         furniture = self.world.scene(self.scene).furniture
@@ -1030,6 +1051,10 @@ class DialogueManager:
         elif self.busy and not self._stepping:  # (an errand's next step starts as the last one ends)
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
+        if is_motion_plan(plan) and re.match(r"^(?:no |and )?(?:the|that|this) (?:one|other one)\b", said.lower()):
+            # "the one on the left" with no question open: a choice, not a turn
+            return self._turn(said, "command", "Which one do you mean? Tell me the place, for example \"the "
+                              f"table by the chair in the {self.rooms[-1]}\".", "clarify", "asked", start)
         if is_motion_plan(plan):  # "turn around", "back up a little": no room to ask for
             reply = describe_motion(plan.nodes)
             return self._start_job("fetch", said, reply[0].upper() + reply[1:] + ".", text, None, None, start,
@@ -1195,6 +1220,10 @@ class DialogueManager:
             return self._turn(text, "answer", f"Sorry, which room — {rooms}?", "clarify", "asked", start)
         if p["kind"] == "which":
             index = self._choose(norm, text, p)
+            thing = self._object_in(norm)[0] if index is None else None
+            seen = self.memory.recall(self.world.name, thing) if thing else None
+            if seen is not None and seen.furniture:  # "the one with the statue": where it was seen
+                index = next((k for k, o in enumerate(p["options"]) if o["id"] == seen.furniture), None)
             if index is not None:
                 self.pending = None
                 return self._fetch_option(text, p, index, start)
@@ -1206,9 +1235,11 @@ class DialogueManager:
                 self.pending = {**p, "options": options, "asked": asked}
                 return self._turn(text, "answer", asked, "clarify", "asked", start, options=options)
             pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
-            if intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text)):
-                self.pending = None
+            if (intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text))) \
+                    or p.get("asked_again"):
+                self.pending = None  # a request of its own; or not an answer twice: the question is let go
                 return None
+            p["asked_again"] = True
             return self._turn(text, "answer", "Sorry, I didn't get which one. " + p["asked"]
                               + " (You can also say \"the first\" or \"never mind\".)", "clarify", "asked", start)
         return None

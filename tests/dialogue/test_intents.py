@@ -253,3 +253,11 @@ def test_courtesies_are_dropped_and_the_request_kept():
 ])
 def test_answers_doubts_and_follow_ups(text, intent):
     assert classify(expand_shorthand(text)).name == intent
+
+
+@pytest.mark.parametrize("text,intent", [
+    ("yes thats it take me to it", "yes"), ("bring me there", "yes"), ("what room is this", "robot_place"),
+    ("whats here", "what_see"), ("wich room is it in", "where"),
+])
+def test_a_fifth_round_of_what_people_said(text, intent):
+    assert classify(expand_shorthand(text)).name == intent

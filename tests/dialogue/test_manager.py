@@ -977,3 +977,24 @@ def test_rooms_by_other_names_routes_and_furniture_the_home_lacks(map_services, 
     assert route.startswith("From the living room, where I am, go") and route.endswith(
         "into the office. Shall I take you there?")
     assert m.handle("how do I get to the living room").reply == "I'm in the living room now."
+
+
+@pytest.mark.parametrize("said, command", [("bed pls", "go to the bed"), ("couch please", "go to the couch"),
+                                           ("now the bedroom", "go to the bedroom"),
+                                           ("the couch please", "go to the couch")])
+def test_a_place_said_alone_as_a_request_is_gone_to(services, tmp_path, said, command):
+    fetcher = StandInFetcher(furniture=None)
+    m = make(services, tmp_path, fetcher)
+    turn = m.handle(said)
+    assert turn.action == "fetch", turn.reply
+    m.wait(10)
+    assert fetcher.texts[0].startswith(command)
+
+
+def test_pointing_with_no_question_open_is_no_turn_and_a_which_question_is_let_go(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("the one on the left").reply.startswith("Which one do you mean?")
+    assert m.handle("go to the table in the bedroom").action == "clarify"
+    assert m.handle("hmm").reply.startswith("Sorry, I didn't get which one")
+    assert not m.handle("whats here").reply.startswith("Sorry, I didn't get which one")
+    assert m.pending is None
