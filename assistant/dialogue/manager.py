@@ -36,7 +36,7 @@ from assistant.dialogue.memory import ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
-from assistant.dialogue.steps import STEP_BREAK, split_steps
+from assistant.dialogue.steps import STEP_BREAK, split_steps, step_place
 from assistant.dialogue.turns import join_words as _join
 from assistant.dialogue.replies import it_them, related_seen
 from assistant.generation import is_are, some
@@ -832,6 +832,10 @@ class DialogueManager:
                               "and beds.", "answer", "not_understood", start, unknown=said)
         entries = sorted((s for s in self.memory.sightings(self.world.name)
                           if s.furniture_word == word and (room is None or s.room == room)), key=lambda s: -s.time_s)
+        kind = {f.id for f in self.world.scene(self.scene).furniture if f.model == singular(said)}
+        if kind and kind != {f.id for f in self.world.scene(self.scene).furniture if f.word == word}:
+            entries = [s for s in entries if s.furniture in kind or (  # "the coffee table": not every table
+                s.furniture is None and singular(said) in (s.phrase or ""))]
         where = f" in the {room}" if room else ""
         if not entries:
             return self._turn(text, intent.name, f"I don't know of anything on the {said}{where}: I only know what "
@@ -915,8 +919,7 @@ class DialogueManager:
                 if turn.action in ("fetch", "clarify") and turn.outcome in ("started", "asked"):
                     self.steps = steps[1:]
                     if turn.action == "fetch":
-                        rooms = _join([f"the {self._step_room(s)}" for s in steps[1:]], "and then")
-                        turn.reply = f"{turn.reply} After that, {rooms}."
+                        turn.reply = f"{turn.reply} After that, {_join([step_place(s) for s in steps[1:]], 'and then')}."
                         self.last_said = turn.reply
                 return turn
         turn = self._command_turn(text, start, force, original)
@@ -973,8 +976,12 @@ class DialogueManager:
         "turn left")."""
         low = part.lower()
         named = sorted((m.start(), r) for r in self.rooms for m in re.finditer(rf"\b{re.escape(r)}\b", low))
-        if not named:
-            return None
+        if not named:  # "then to the bed": the one room that has the piece of furniture said
+            furniture = self.world.scene(self.scene).furniture
+            said = [f for f in furniture if re.search(rf"\b{re.escape(f.model)}\b", low)] or [
+                f for f in furniture if any(furniture_category(singular(w)) == f.word for w in low.split())]
+            homes = {f.room for f in said}
+            return homes.pop() if len(homes) == 1 else None
         plan = self.services.parser(self.world).parse(self._substitute(part)).plan
         return plan.room if plan.room in {r for _, r in named} else named[-1][1]
 

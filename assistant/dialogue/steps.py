@@ -3,8 +3,8 @@
 One plan has one room: the grounders read "go to the office, after that go to the bedroom and stop
 at the bed" as a single destination and the robot did only one of the two. A request whose parts
 (split at "then", "after that", "afterwards", "and then", a full stop or a semicolon) each send
-the robot to a room, one after another and each to another room than the one before, is read as
-that many steps; the chat carries them out in turn (``DialogueManager``). A route told in one
+the robot to a room (named, or the one room with the furniture named), not all to the same room,
+is read as that many steps; the chat carries them out in turn (``DialogueManager``). A route told in one
 go ("go out the door, turn left, then go into the kitchen") has parts that name no room: it
 stays one command, as the grounders read it.
 """
@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-__all__ = ["split_steps", "STEP_BREAK"]
+__all__ = ["split_steps", "step_place", "STEP_BREAK"]
 
 #: where one step of an errand ends and the next begins
 STEP_BREAK = re.compile(r"\s*,?\s*\b(?:and then|then|after that|afterwards|after this|and after that)\b\s*,?\s*"
@@ -29,9 +29,17 @@ def split_steps(text: str, room_of: Callable[[str], str | None]) -> list[str]:
     if len(parts) < 2:
         return [text]
     rooms = [room_of(p) for p in parts]
-    if any(r is None for r in rooms) or any(a == b for a, b in zip(rooms, rooms[1:])):
+    if any(r is None for r in rooms) or all(a == b for a, b in zip(rooms, rooms[1:])):
         return [text]
-    return [p if _has_verb(p) else f"go to the {room}" for p, room in zip(parts, rooms)]
+    return [f"go {p}" if p.lower().startswith(("to ", "into ", "through ")) else p if _has_verb(p)
+            else f"go to the {room}" for p, room in zip(parts, rooms)]
+
+
+def step_place(step: str) -> str:
+    """What a step goes to, as said after "After that, …": "go to the bed" → "the bed"."""
+    rest = re.sub(r"^(?:please )?(?:go|come|head|walk|drive|move|get)(?: back| over| on| right| straight)*"
+                  r"(?: to| into| in to| towards| toward| through)? ", "", step.strip(), flags=re.IGNORECASE)
+    return rest if rest.lower().startswith(("the ", "my ", "your ")) else step
 
 
 _VERBS = ("go", "come", "head", "walk", "drive", "move", "get", "take", "bring", "find", "look", "check",

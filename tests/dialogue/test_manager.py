@@ -560,6 +560,8 @@ def test_what_is_on_a_piece_of_furniture_from_memory(services, tmp_path):
     assert "your keys on the coffee table in the living room (you told me just now)" in both.reply
     bedroom = m.handle("whats on the table in the bedroom")
     assert bedroom.data["objects"] == ["mug"]
+    coffee = m.handle("what's on the coffee table")  # that kind of table only, not every table
+    assert coffee.data["objects"] == ["keys"]
 
 
 @pytest.mark.parametrize("said", ["go to the table to the right of the bed in the bedroom",

@@ -22,7 +22,7 @@ def room_of(part: str):
     ("go to the bedroom. after that, come back to the hallway", ["go to the bedroom", "come back to the hallway"]),
     ("go to the bedroom and then the living room", ["go to the bedroom", "go to the living room"]),
     ("go through the living room into the inner hall then into the small room",
-     ["go through the living room into the inner hall", "into the small room"]),
+     ["go through the living room into the inner hall", "go into the small room"]),
 ])
 def test_an_errand_is_split_into_its_steps(text, steps):
     assert split_steps(text, room_of) == steps
@@ -37,3 +37,19 @@ def test_an_errand_is_split_into_its_steps(text, steps):
 ])
 def test_one_command_stays_one(text):
     assert split_steps(text, room_of) == [text]
+
+
+def test_steps_to_furniture_and_what_is_said_of_them():
+    from assistant.dialogue.steps import step_place
+
+    furniture_rooms = {"bed": "bedroom", "dinner table": "living room"}
+
+    def room_or_furniture(part):
+        return room_of(part) or next((r for f, r in furniture_rooms.items() if f in part), None)
+
+    assert split_steps("go to the dinner table and then to the bed", room_or_furniture) == \
+        ["go to the dinner table", "go to the bed"]
+    assert split_steps("go to the living room, then to the dinner table, then to the bed", room_or_furniture) == \
+        ["go to the living room", "go to the dinner table", "go to the bed"]
+    assert step_place("go to the bed") == "the bed" and step_place("come back to the hallway") == "the hallway"
+    assert step_place("turn left") == "turn left"
