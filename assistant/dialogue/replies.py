@@ -140,7 +140,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             pending = {"kind": "confirm", "search": obj, "object": obj}
             here += f" Shall I look for {it_them(obj)}?"
         return Turn(text, "command", here, "fetch", "failed", data, time.perf_counter() - start), pending
-    if item is not None and item.room and not _names_furniture(text):  # "go to the living room": the room
+    if item is not None and item.room and not names_furniture(text):  # "go to the living room": the room
         return Turn(text, "command", f"Done — I'm in the {item.room}.", "fetch", "success", data,
                     time.perf_counter() - start), pending
     if item is not None:
@@ -152,7 +152,7 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
                 time.perf_counter() - start), pending
 
 
-def _names_furniture(command: str) -> bool:
+def names_furniture(command: str) -> bool:
     """Whether a command names a piece of furniture (else the robot chose what to face)."""
     return any(furniture_category(w) is not None for w in re.findall(r"[a-z]+", command.lower()))
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from assistant.app import Status, Stopped
 from assistant.dialogue.clarify import activity_phrase, progress_sentence
-from assistant.dialogue.replies import ReplyContext, fetch_reply, search_reply
+from assistant.dialogue.replies import ReplyContext, fetch_reply, names_furniture, search_reply
 from assistant.dialogue.seen import SeenRecorder
 from assistant.dialogue.turns import Turn
 
@@ -159,6 +159,9 @@ class TaskWorker:
                 if data.get("room") in self.unreachable_said:
                     sentence = None
                 self.unreachable_said.add(data.get("room"))
+            if name == "entered" and job.kind == "fetch" and not obj and job.args and job.args[2] == data.get("room") \
+                    and not names_furniture(job.args[1]):
+                sentence = None  # "go to the bedroom": its "Done — I'm in the bedroom." says it
             if sentence:
                 self.speak(sentence)
             if job.stop.is_set():
@@ -224,9 +227,6 @@ class TaskWorker:
             turn, pending = fetch_reply(ctx, text, result, obj, start, summary, before, said=job.said)
             if pending is not None:
                 c.pending = pending
-            if turn.reply.startswith("Done — ") and c.last_said == turn.reply[len("Done — "):][:1].upper() + \
-                    turn.reply[len("Done — ") + 1:]:
-                turn.reply = "Done."  # "I'm in the bedroom." was said a moment ago
             return turn
         except Exception as error:  # a bug here must still end the task with a reply
             return Turn(text, "error", f"Sorry, something went wrong inside me after the {job.kind} "

@@ -816,11 +816,14 @@ def test_a_thing_told_on_a_kind_of_table_is_fetched_and_answered(services, tmp_p
 def test_the_next_task_starts_where_the_last_one_left_the_robot(services, tmp_path):
     """"go to the bedroom", then "turn around": the robot turns in the bedroom (each task used
     to start the simulated robot at the home's start pose, in the hallway)."""
-    m = DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"))
+    said = []
+    m = DialogueManager("apartment", services=services, memory=ObjectMemory(tmp_path / "memory.json"),
+                        say=said.append)
     m.handle("go to the bedroom")
     first = m.wait(120)
     assert first.outcome == "success" and m.robot_room()[0] == "bedroom"
-    assert first.reply == "Done."  # "I'm in the bedroom." was said as it went in, not said twice
+    assert first.reply == "Done — I'm in the bedroom."
+    assert "I'm in the bedroom." not in said  # not said as it went in too
     x, y, heading = first.data["final_pose"]
     m.handle("turn around")
     turned = m.wait(60)
