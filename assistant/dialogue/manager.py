@@ -1081,6 +1081,10 @@ class DialogueManager:
             landmarks = {ref for n in plan.nodes for ref, _ in n.pairs if ref in FURNITURE_WORDS.values()}
             with_landmarks = self._rooms_with(landmarks)
             homes = [r for r in homes if r in with_landmarks] or homes
+            # a landmark said by its kind ("the chair next to the hexagon table"): the rooms with one
+            named = {f.room for f in self.world.scene(self.scene).furniture if f.model != f.word
+                     and f.word != node.target and re.search(rf"\b{re.escape(f.model)}\b", text.lower())}
+            homes = [r for r in homes if r in named] or homes
             if len(homes) == 1:
                 room, text = homes[0], f"{text} in the {homes[0]}"
             elif homes and not force:

@@ -1003,3 +1003,12 @@ def test_pointing_with_no_question_open_is_no_turn_and_a_which_question_is_let_g
     assert m.handle("hmm").reply.startswith("Sorry, I didn't get which one")
     assert not m.handle("whats here").reply.startswith("Sorry, I didn't get which one")
     assert m.pending is None
+
+
+def test_a_landmark_said_by_its_kind_picks_the_room(services, tmp_path):
+    """Only the bedroom has a hexagon table: no "Which room is the chair in?"."""
+    m = make(services, tmp_path, StandInFetcher(furniture=None))
+    turn = m.handle("go to the chair next to the hexagon table")
+    assert turn.action == "fetch" and turn.data["room"] == "bedroom"
+    m.wait(10)
+    assert m.handle("go to the chair").action == "clarify"  # said alone, either room
