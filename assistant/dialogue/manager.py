@@ -439,8 +439,8 @@ class DialogueManager:
             self._stepping = False
         if turn.reply:
             self.say(turn.reply)
-        if turn.action != "fetch":  # a question, or a step it cannot do: the rest waits for the answer
-            self.steps = [] if turn.outcome == "not_understood" else self.steps
+        if turn.outcome == "not_understood":  # a step it cannot do: the rest is dropped (a question keeps them)
+            self.steps = []
 
     @property
     def fetch_started(self) -> bool:

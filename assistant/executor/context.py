@@ -79,7 +79,11 @@ class TaskContext:
         navigator = Navigator(world, obstacles.occupancy, localizer=localizer, max_replans=max_replans)
         if look_first:
             heading = navigator.pose(robot).theta
-            navigator.look_around(robot, lambda frame, pose: obstacles.add_frame(frame, pose) < 0)
+            def mark(frame, pose) -> bool:
+                obstacles.add_frame(frame, pose)
+                return False  # look all the way round
+
+            navigator.look_around(robot, mark)
             navigator.follower.turn_to(robot, heading, localizer=localizer)
         return cls(world, robot, perception, obstacles, navigator, localizer, float(max_sim_seconds),
                    on_event, robot.odometry().timestamp_s)
