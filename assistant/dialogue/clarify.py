@@ -257,7 +257,8 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
     if m:
         noun = re.sub(r"\b(is|are|now|please|again|then|gone|at|in|on|anywhere|somewhere|everywhere|around|"
                       r"lately|recently|today|yesterday|here|there|too|at all)\b", "", m.group(1)).strip()
-        found = object_phrase(noun.split(), ["NN"] * len(noun.split())) if noun else None
+        # read after a determiner, as said: "my hearing aid" is one compound noun
+        found = object_phrase(["the", *noun.split()], ["DT", *["NN"] * len(noun.split())]) if noun else None
         meant = None
         if found is not None:  # "wheres my lapptop": the laptop; "my glasess": the glasses
             from assistant.world.catalogue import load_catalogue

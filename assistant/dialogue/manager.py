@@ -32,7 +32,7 @@ from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS
                                         told_place, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
-from assistant.dialogue.memory import ObjectMemory
+from assistant.dialogue.memory import TOLD, TOLD_NOT_SEEN, ObjectMemory
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
@@ -67,6 +67,8 @@ IT_IS_AT = (r"^(?:(?:no|sorry|oh|actually|well|i think|wrong room|wrong place)\b
             r"beside|behind|inside|in front of) [a-z ]+)$")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
+#: intents about the task under way, not to wait for its end (``about_the_task``)
+DURING_TASK = frozenset({"stop", "cancel", "emergency", "status", "start_over", "command"})
 
 
 def _pointed(word: str, options: list[dict]) -> list[str]:
@@ -198,6 +200,13 @@ class DialogueManager:
         return turn
 
     # ------------------------------------------------------------------ entry point
+    def about_the_task(self, text: str) -> bool:
+        """Whether an utterance is for the task under way — stop it, cancel it, ask what it is
+        doing, or a command (one that changes the task, as telling where the thing searched for
+        is, is taken at once; any other answers "I'm still busy") — rather than a question to
+        answer once it has ended."""
+        return classify(expand_shorthand(drop_courtesies(text))).name in DURING_TASK
+
     def handle(self, text: str) -> Turn:
         """Route one utterance; never raises for what a person may say."""
         start = time.perf_counter()
@@ -364,7 +373,7 @@ class DialogueManager:
             return self._turn(text, "what_see", "I'm between rooms just now. Ask me what's in a room, for example "
                               f"\"what's in the {self.rooms[-1]}?\"", start=start)
         furniture = furniture_answer(self.world.scene(self.scene).furniture, self.rooms, "list", "", room)
-        things = [s for s in self.memory.sightings(self.world.name) if s.room == room and s.source != "told"]
+        things = [s for s in self.memory.sightings(self.world.name) if s.room == room and not s.told]
         seen = (f" Of your things, I last saw {_join([f'your {s.object}' for s in things])} here." if things
                 else " I haven't seen any of your things here.")
         return self._turn(text, "what_see", f"I'm in the {room}. {furniture}{seen}", start=start, room=room)
@@ -526,8 +535,8 @@ class DialogueManager:
     def _seen_list(self, text: str, start: float) -> Turn:
         """"what did you see?": the things the robot remembers in this home, latest first."""
         remembered = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
-        seen = [s for s in remembered if s.source != "told"]
-        told_things = [f"your {s.object}" for s in remembered if s.source == "told"]
+        seen = [s for s in remembered if not s.told]
+        told_things = [f"your {s.object}" for s in remembered if s.told]
         told = _join(told_things) if told_things else ""
         if not seen:
             return self._turn(text, "seen_list", "I haven't seen any of your things here yet — ask me to look for "
@@ -664,9 +673,12 @@ class DialogueManager:
             here = seen.room is not None and not self.busy and self.robot_room()[0] == seen.room
             its = "They're" if it_them(obj) == "them" else "It's"
             offer = f"{its} in this room — shall I go over to {it_them(obj)}?" if here else "Shall I go and check?"
-            reply = f"{said[:1].upper()}{said[1:]}. {offer}"
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
                             "object": obj}
+            if seen.source == TOLD_NOT_SEEN:  # looked there already: the offer is a search of the home
+                offer = f"Shall I look for {it_them(obj)} all over the home?"
+                self.pending = {"kind": "confirm", "search": obj, "object": obj}
+            reply = f"{said[:1].upper()}{said[1:]}. {offer}"
             return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj,
                               source="memory", memory=seen.to_dict())
         if seen is not None and seen.x_m is not None:  # the way to where the robot saw it
@@ -807,7 +819,7 @@ class DialogueManager:
         phrase = re.sub(rf"\s*\b(in|inside) (the|my|our) {re.escape(room)}$", "", place).strip() if room else place
         if phrase in ("", "in the", "in") or re.fullmatch(r"(in|inside) (the|my|our) [a-z ]+", phrase):
             phrase = None  # only the room was said
-        seen = self.memory.remember(self.world.name, obj, room, None, word, phrase, source="told")
+        seen = self.memory.remember(self.world.name, obj, room, None, word, phrase, source=TOLD)
         where = " ".join(p for p in (phrase, f"in the {room}" if room else "") if p)
         return self._turn(text, intent.name, f"OK — I'll remember that your {obj} {is_are(obj)} {where}.", "answer",
                           "answered", start, object=obj, source="told", memory=seen.to_dict())
@@ -848,8 +860,10 @@ class DialogueManager:
     def _seen_at(self, obj: str, seen) -> str:
         """Where a remembered thing is, said with where the memory came from: "I saw your mug 3
         minutes ago on the table …" or "you told me an hour ago that your keys are on …"."""
-        if seen.source == "told":
-            return f"you told me {self.memory.age(seen)} that your {obj} {is_are(obj)}{_seen_place(seen)}"
+        if seen.told:
+            told = f"you told me {self.memory.age(seen)} that your {obj} {is_are(obj)}{_seen_place(seen)}"
+            return told + (f", but I couldn't see {it_them(obj)} there when I looked" if seen.source == TOLD_NOT_SEEN
+                           else "")
         return f"I saw your {obj} {self.memory.age(seen)}{_seen_place(seen)}"
 
     def _last_object(self) -> str | None:

@@ -31,9 +31,16 @@ MEMORY_VERSION = 2
 READABLE_VERSIONS = (1, 2)
 
 
+#: where a remembered place came from, besides what the robot saw it in ("fetch", "search"): the
+#: person said so, or the person said so and the robot then looked there and did not see it
+TOLD = "told"
+TOLD_NOT_SEEN = "told, not seen"
+
+
 @dataclass
 class MemoryEntry:
-    """One remembered object: ``time_s`` is seconds since the epoch."""
+    """One remembered object: ``time_s`` is seconds since the epoch; ``source`` where the place
+    came from (:data:`TOLD`, :data:`TOLD_NOT_SEEN`, or what the robot saw it in)."""
 
     object: str
     world: str
@@ -45,6 +52,11 @@ class MemoryEntry:
     source: str = "fetch"
     x_m: float | None = None  # where the object was seen (world frame, metres)
     y_m: float | None = None
+
+    @property
+    def told(self) -> bool:
+        """Whether the place is one the person said (seen there by the robot or not)."""
+        return self.source in (TOLD, TOLD_NOT_SEEN)
 
     def to_dict(self) -> dict:
         return asdict(self)

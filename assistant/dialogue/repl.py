@@ -227,6 +227,11 @@ class ChatSession:
                 if not line.strip():
                     continue
                 try:
+                    if self.scripted and self.manager.busy and not self.manager.about_the_task(line):
+                        # a question read from a file or a pipe is about what the task before it
+                        # found ("where's my hearing aid?" after "it's on the bed"): as a person
+                        # would, it waits for that task; "stop" or "what are you doing?" do not
+                        self.manager.wait()
                     turn = self.manager.handle(line)
                     if self.scripted and (turn.outcome == "busy" or (turn.action == "leave" and self.manager.busy)):
                         # lines read from a file or a pipe come faster than the robot moves: a

@@ -9,6 +9,7 @@ import time
 from dataclasses import dataclass
 
 from assistant.app import Status
+from assistant.dialogue.memory import TOLD_NOT_SEEN
 from assistant.dialogue.services import furniture_phrase
 from assistant.dialogue.turns import Turn, join_words
 from assistant.grounding.vocabulary import furniture_category
@@ -136,6 +137,11 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             ctx.memory.forget(ctx.world.name, obj)
             data["forgot"] = True
             here += " It isn't where I saw it last, so I've forgotten that place."
+        elif before is None and item is not None and names_furniture(said or text):
+            # "my hearing aid is on the bed": kept as the person said it, with the looking done,
+            # so that "where is my hearing aid?" answers with it
+            ctx.memory.remember(ctx.world.name, obj, item.room, item.id, item.word, phrase, source=TOLD_NOT_SEEN)
+            data["remembered"] = TOLD_NOT_SEEN
         if ctx.services.search_mode == "sensed":
             pending = {"kind": "confirm", "search": obj, "object": obj}
             here += f" Shall I look for {it_them(obj)}?"

@@ -57,7 +57,17 @@ LANDMARK_BEFORE = frozenset({"with", "by", "next", "near", "beside", "behind", "
                              "between", "besides", "from", "past", "around"})
 #: "-ing" words that are things ("a ring"); any other is a verb or a gerund ("sitting")
 ING_NOUNS = frozenset({"ring", "thing", "ceiling", "painting", "string", "building", "clothing",
-                       "earring", "earrings", "charger", "wedding", "drawing", "stocking", "pudding"})
+                       "earring", "earrings", "charger", "wedding", "drawing", "stocking", "pudding",
+                       "knitting", "sewing", "bedding", "stuffing", "icing", "packaging", "wrapping", "wiring",
+                       "washing", "shopping", "ironing"})
+#: words before an "-ing" word that make it the first of a compound noun when a noun follows
+#: ("my hearing aid", "the walking stick", "her reading glasses", "a frying pan")
+COMPOUND_BEFORE = frozenset({"my", "the", "a", "an", "your", "his", "her", "our", "their", "this", "that",
+                             "some", "any", "new", "old", "spare"})
+#: "-ing" words before a noun that say a room or an action, never a compound ("the living room",
+#: "the following door", "the remaining chair")
+NOT_COMPOUND_ING = frozenset({"living", "dining", "sitting", "waiting", "meeting", "following", "remaining",
+                              "adjoining", "opposing", "coming", "ceiling", "landing", "building"})
 #: words between a collective and what it holds
 OF = "of"
 FILLER_WORDS = frozenset({"um", "uh", "er", "erm", "uhm", "hmm", "like"})
@@ -203,10 +213,11 @@ def object_phrases(words: Sequence[str], pos: Sequence[str]) -> list[tuple[Objec
     i = 0
     while i < len(keep):
         w, t = keep[i]
-        if not _nounish(w, t) and not (w in COLLECTIVES and i + 1 < len(keep) and keep[i + 1][0] == OF):
+        compound = _ing_compound(keep, i)
+        if not compound and not _nounish(w, t) and not (w in COLLECTIVES and i + 1 < len(keep) and keep[i + 1][0] == OF):
             i += 1
             continue
-        j = i
+        j = i + 1 if compound else i
         while j < len(keep) and _nounish(*keep[j]):
             j += 1
         nouns = [x for x, _ in keep[i:j]] or [w]
@@ -235,6 +246,15 @@ def object_phrases(words: Sequence[str], pos: Sequence[str]) -> list[tuple[Objec
         out.append((ObjectPhrase(tuple(nouns), tuple(adjectives), object_kind(" ".join(nouns))), landmark))
         i = j
     return out
+
+
+def _ing_compound(keep, i: int) -> bool:
+    """Whether the "-ing" word at ``i`` starts a compound noun: after a determiner or possessive
+    and before a noun ("my hearing aid", "the walking stick"; not "the living room")."""
+    w = keep[i][0]
+    return (w.endswith("ing") and len(w) > 4 and w not in NOT_COMPOUND_ING and w not in ING_NOUNS
+            and i > 0 and keep[i - 1][0] in COMPOUND_BEFORE
+            and i + 1 < len(keep) and _nounish(*keep[i + 1]))
 
 
 def _describes_furniture(keep, j: int) -> bool:

@@ -184,6 +184,25 @@ def test_a_chat_read_from_a_pipe_takes_each_command_after_the_last(tmp_path):
     assert out.rstrip().endswith("Goodbye."), out
 
 
+def test_a_question_read_from_a_pipe_is_answered_after_the_task_before_it(tmp_path):
+    """"my hearing aid is on the bed" then "where's my hearing aid?": the question waits for the
+    robot to have looked (it was answered at once, "I haven't seen your hearing aid"), and the
+    answer says what it was told and that it looked."""
+    import subprocess
+
+    env = dict(os.environ, ASSISTANT_DATA=str(tmp_path / "data"), PYTHONWARNINGS="ignore")
+    run = subprocess.run([sys.executable, "-m", "assistant", "chat", "--world", "apartment", "--perception",
+                          "oracle", "--search", "oracle"], input="my hearing aid is on the bed\n"
+                          "where's my hearing aid?\nbye\n", capture_output=True, text=True, cwd=str(ROOT), env=env,
+                          timeout=240)
+    out = run.stdout
+    looked = out.find("I'm at the bed, but I can't see your hearing aid there.")
+    told = out.find("You told me just now that your hearing aid is on the bed in the bedroom, but I couldn't see it "
+                    "there when I looked.")
+    assert 0 <= looked < told, out
+    assert "I haven't seen your hearing aid" not in out, out
+
+
 def test_telling_where_a_thing_is_while_the_robot_searches_for_it_sends_it_there(tmp_path):
     """"the remote is on the coffee table in the living room" during the search for the remote:
     the search stops (without a word) and the robot goes there."""

@@ -142,6 +142,29 @@ def test_fetch_not_finding_object_forgets_it(services, tmp_path):
     assert m.memory.recall("apartment", "mug") is None
 
 
+def test_a_place_told_and_not_seen_there_is_kept_as_told(services, tmp_path):
+    """"my hearing aid is on the bed": the robot goes, does not see it; asked later, it says what
+    it was told and that it looked, and offers a search of the home (it had said "I haven't seen
+    your aid, and I don't know where it is")."""
+    m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
+    m.handle("my hearing aid is on the bed")
+    assert "can't see your hearing aid" in m.wait(10).reply
+    kept = m.memory.recall("apartment", "hearing aid")
+    assert (kept.source, kept.room, kept.furniture) == ("told, not seen", "bedroom", "bed_1") and kept.told
+    reply = m.handle("where's my hearing aid?").reply
+    assert reply.startswith("You told me just now that your hearing aid is on the bed in the bedroom, but I "
+                            "couldn't see it there when I looked.") and "all over the home" in reply
+    assert m.pending == {"kind": "confirm", "search": "hearing aid", "object": "hearing aid"}
+    assert "hearing aid" in m.handle("what have you seen?").reply  # told, not among the things seen
+
+
+def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
+    m.handle("bring me my hearing aid")
+    m.wait(10)
+    assert m.memory.recall("apartment", "hearing aid") is None
+
+
 def test_control_and_odd_input_never_raise(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
     for text in ["", "?", "blorp zing", "the " * 300, "shut up", "repeat that", "which home am I in",
