@@ -150,7 +150,12 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"theyre (?:not )?there|it is (?:not )?there))?$",
                r"^(?:(?:can|could|would|will) you |please )*(?:check|look|search|have a look|take a look|go and look|"
                r"go and check|look for (?:it|them))(?: once)? again(?: please| for me)*$",
-               r"^(?:please )?(?:check|look) (?:once )?more$", r"^really$")),
+               r"^(?:please )?(?:check|look) (?:once )?more$", r"^really$",
+               # doubting what was just said: "is that right?", "you sure?", "is it really there?"
+               r"^(?:(?:but|and|so|hmm|oh|wait) )*(?:is|was) (?:that|it|this) (?:really )?(?:right|correct|true|so|"
+               r"really (?:there|true|so))$", r"^(?:(?:but|and|so|hmm|oh) )*(?:you|u) (?:sure|certain)$",
+               r"^(?:(?:but|and|so|hmm|oh) )*(?:are|is) (?:they|it) really there$",
+               r"^(?:(?:but|and|so|hmm|oh) )*how (?:are you|can you be|do you know)(?: so)?(?: sure| that)?$")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
                    r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
                    r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",

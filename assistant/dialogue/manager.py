@@ -583,7 +583,8 @@ class DialogueManager:
         if obj is None:
             return self._turn(text, intent.name, "Which of your things shall I look for? Ask me, for example, "
                               "\"where is my mug?\"", "clarify", "asked", start)
-        if re.match(r"^(?:(?:but|and|so|hmm|oh) )*(?:are you|really)", intent.text):
+        if re.match(r"^(?:(?:but|and|so|hmm|oh|wait) )*(?:are you|really|is|was|you|u|how|are they)\b",
+                    intent.text):  # a doubt, not "check again"
             seen = self.memory.recall(self.world.name, obj)
             if seen is not None:
                 said = self._seen_at(obj, seen)
@@ -591,9 +592,19 @@ class DialogueManager:
                                 "object": obj}
                 return self._turn(text, intent.name, f"{said[:1].upper()}{said[1:]} — that's what I go by. Shall I "
                                   "go and check?", "answer", "answered", start, object=obj, source="memory")
+            about = [t.data for t in self.history if t.data.get("object") == obj]
+            if about and about[-1].get("source") == "simulator" and about[-1].get("found", True):
+                # the answer came from the home's map: say so, and offer to go and see
+                offer = self.last_offer if self.last_offer and self.last_offer.get("object") == obj else None
+                self.pending = offer or {"kind": "confirm", "command": f"bring me the {obj}", "object": obj}
+                return self._turn(text, intent.name, f"I haven't seen your {obj} myself — I went by the map of "
+                                  "the home I was given, which may be out of date. Shall I go and check?", "answer",
+                                  "answered", start, object=obj, source="simulator")
             self.pending = {"kind": "confirm", "search": obj, "object": obj}
-            return self._turn(text, intent.name, f"I haven't seen your {obj} myself. Shall I look for "
-                              f"{it_them(obj)} again?", "answer", "answered", start, object=obj)
+            looked = any(t.get("source") == "search" for t in about)
+            return self._turn(text, intent.name, f"I haven't seen your {obj} myself, and nobody has told me where "
+                              f"{'they are' if it_them(obj) == 'them' else 'it is'}. Shall I look for {it_them(obj)}"
+                              f"{' again' if looked else ''}?", "answer", "answered", start, object=obj)
         return self._search(text, intent.name, obj, "static", start,
                             lead=f"OK, I'll look for your {obj} again.")
 
@@ -828,7 +839,14 @@ class DialogueManager:
         """The first furniture word of a place ("on the table next to the bed" → "table") and
         the rooms that have every piece of furniture it names (only the bedroom has a bed)."""
         words = list(dict.fromkeys(w for w in map(furniture_category, place.split()) if w is not None))
-        return (words[0] if words else None), (self._rooms_with(words) if words else [])
+        rooms = self._rooms_with(words) if words else []
+        if len(rooms) > 1:  # "on the desk": the rooms with a desk, not every room with a table
+            furniture = self.world.scene(self.scene).furniture
+            models = {f.model for f in furniture if re.search(rf"\b{re.escape(f.model)}s?\b", place)}
+            with_models = [r for r in rooms if all(any(f.room == r and f.model == m for f in furniture)
+                                                   for m in models)]
+            rooms = with_models if models and with_models else rooms
+        return (words[0] if words else None), rooms
 
     def _on_furniture(self, text: str, intent, start: float) -> Turn:
         """"what else is on the table?", "is there anything on the bed?": the things the memory

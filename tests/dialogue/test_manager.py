@@ -158,6 +158,20 @@ def test_a_place_told_and_not_seen_there_is_kept_as_told(services, tmp_path):
     assert "hearing aid" in m.handle("what have you seen?").reply  # told, not among the things seen
 
 
+def test_a_doubt_is_answered_with_what_the_robot_goes_by(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    m.services.search_mode = "oracle"  # answered from the map, not searched for
+    try:
+        for doubt in ("is that right?", "you sure?", "how do you know?", "is it really there?"):
+            m.handle("where is my hearing aid?")  # not on the map, nobody said: "I don't know where it is"
+            reply = m.handle(doubt).reply
+            assert reply == ("I haven't seen your hearing aid myself, and nobody has told me where it is. Shall I "
+                             "look for it?"), doubt  # was taken as "yes" to the offer to look
+            m.handle("no")
+    finally:
+        m.services.search_mode = "sensed"
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
@@ -967,7 +981,9 @@ def test_follow_ups_about_the_last_thing_asked(map_services, tmp_path):
     assert m.handle("what about in the bedroom?").reply.startswith("No — the fork")
     assert m.handle("what about the kitchen").reply.startswith("There is no kitchen here")
     doubt = m.handle("are you sure?")  # it goes by the map: it says so and offers to look
-    assert doubt.reply == "I haven't seen your fork myself. Shall I look for it again?"
+    assert doubt.reply == ("I haven't seen your fork myself — I went by the map of the home I was given, which may "
+                           "be out of date. Shall I go and check?")
+    assert m.pending["command"].startswith("bring me the fork in the office")  # where the map has it
     assert m.handle("no").reply == "OK."
     there = m.handle("take me there")
     assert there.action == "fetch" and there.data["object"] == "fork"
