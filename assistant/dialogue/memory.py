@@ -146,6 +146,11 @@ class ObjectMemory:
         self._forgotten: dict[tuple[str, str], float] = {}  # key -> when this session forgot it
         self._synced: dict[tuple[str, str], float] = {}  # the file as last read or written: key -> time_s
         self._lock = threading.Lock()
+        if self.path is not None and self.path.exists() and not self.path.is_file():
+            from assistant.errors import AssistantError
+
+            raise AssistantError(f"the memory file {self.path} is a folder (or not a regular file); give a file "
+                                 f"name, e.g. --memory {self.path / 'memory.json'}")
         if self.path is not None and self.path.exists():
             self._load()
 
@@ -188,7 +193,10 @@ class ObjectMemory:
 
     def _keep_unreadable(self, move: bool) -> Path | None:
         """Move (or copy) an unreadable memory file aside, so the next save does not overwrite
-        what it held (``NAME.unreadable-<time>``); None when it cannot be kept."""
+        what it held (``NAME.unreadable-<time>``); None when it cannot be kept. Only a regular
+        file is ever moved."""
+        if not self.path.is_file():
+            return None
         target = self.path.with_name(f"{self.path.name}.unreadable-{int(self.clock())}")
         n = 1
         while target.exists():  # never over an earlier one

@@ -45,6 +45,11 @@ class ChatSession:
         self.memory = ObjectMemory(args.memory or data / "memory.json")
         stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%S.%fZ")
         self.transcript_path = Path(args.transcripts or data / "transcripts") / f"{stamp}.json"
+        if self.transcript_path.parent.exists() and not self.transcript_path.parent.is_dir():
+            from assistant.errors import AssistantError
+
+            raise AssistantError(f"the transcripts folder {self.transcript_path.parent} is a file; give a folder "
+                                 "with --transcripts (or set ASSISTANT_DATA to a folder)")
         self.history_path = data / "chat_history"
         self.services = Services(perception=args.perception, seed=args.seed,
                                  search=getattr(args, "search", "sensed"), robot=getattr(args, "robot", "sim"))

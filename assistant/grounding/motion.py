@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from assistant.grounding.amounts import AMOUNT_WORDS, said_amount, is_amount_word
+from assistant.grounding.amounts import AMOUNT_WORDS, is_amount_word, said_amount, split_units
 from assistant.grounding.types import RDTNode
 from assistant.rdt import NO_TARGET
 
@@ -68,6 +68,12 @@ DIRECTION_WORDS = {"forward": "front", "forwards": "front", "ahead": "front", "s
                    "other": "around"}
 #: words that make a move small
 SMALL_WORDS = frozenset({"little", "bit", "slightly", "tad", "touch", "smidge", "inch"})
+#: a way the move goes along, said with a distance ("go down the hallway about 5 metres"): the
+#: move ahead, as far as said (without a distance the hallway is a room for the grounders)
+ALONG_WORDS = frozenset({"down", "along"})
+WAY_WORDS = frozenset({"hall", "hallway", "corridor", "passage", "passageway", "landing"})
+#: a last clause that only ends the move ("… then stop", "and stop there")
+END_CLAUSES = (("stop",), ("stop", "there"), ("and", "stop"), ("then", "stop"), ("stop", "then"))
 #: every word a pure move may use (besides numbers)
 MOTION_VOCABULARY = SEPARATORS | FILLERS | MOVE_VERBS | TURN_VERBS | REVERSE_VERBS | set(DIRECTION_WORDS) \
     | SMALL_WORDS | AMOUNT_WORDS | {"more", "further", "farther"}
@@ -107,6 +113,8 @@ def _clause_node(words: list[str]) -> RDTNode | None:
             directions.append(DIRECTION_WORDS[w])
     if not directions and any(w in ("keep", "continue", "proceed", "advance") for w in words):
         directions = ["front"]
+    if not directions and amount.distance_m is not None and any(w in MOVE_VERBS for w in words):
+        directions = ["front"]  # "drive 1.5 m", "walk three meters": ahead
     if not directions and "reverse" in words:
         directions = ["back"]
     if not directions:
@@ -133,11 +141,13 @@ def _clause_node(words: list[str]) -> RDTNode | None:
 def read_motion(words: Sequence[str]) -> list[RDTNode] | None:
     """The moves of a command made only of moves and turns (see the module), in order, or None
     when any word says something else or a clause names no direction."""
-    lowered = [str(w).strip().lower() for w in words if str(w).strip()]
+    lowered = split_units([str(w).strip().lower() for w in words if str(w).strip()])
     lowered = [w for w in lowered if w not in ("'", '"', "?")]
+    lowered = _along_the_way(_without_end(lowered))
     if not lowered or any(w not in MOTION_VOCABULARY and not is_amount_word(w) for w in lowered):
         return None
-    if not any(w in DIRECTION_WORDS or w in ("keep", "continue", "proceed", "advance", "reverse") for w in lowered):
+    if not any(w in DIRECTION_WORDS or w in ("keep", "continue", "proceed", "advance", "reverse") for w in lowered) \
+            and not (any(w in MOVE_VERBS for w in lowered) and said_amount(lowered).distance_m is not None):
         return None
     nodes = []
     for clause in _clauses(lowered):
@@ -148,6 +158,37 @@ def read_motion(words: Sequence[str]) -> list[RDTNode] | None:
             return None
         nodes.append(node)
     return nodes or None
+
+
+def _without_end(words: list[str]) -> list[str]:
+    """The words without a last clause that only stops ("go ahead two meters then stop")."""
+    while words and words[-1] in (".", "!"):
+        words = words[:-1]
+    for end in sorted(END_CLAUSES, key=len, reverse=True):
+        if len(words) > len(end) and tuple(words[-len(end):]) == end:
+            return words[:-len(end)]
+    return words
+
+
+def _along_the_way(words: list[str]) -> list[str]:
+    """"go down the hallway about 5 metres": in a clause with a distance, the way it goes along
+    is dropped and "down"/"along" read as ahead; otherwise the words are left as they are."""
+    out: list[list[str]] = []
+    for clause in _clauses_kept(words):
+        if any(w in WAY_WORDS for w in clause) and said_amount(clause).distance_m is not None:
+            clause = [("ahead" if w in ALONG_WORDS else w) for w in clause if w not in WAY_WORDS]
+        out.append(clause)
+    return [w for clause in out for w in clause]
+
+
+def _clauses_kept(words: list[str]) -> list[list[str]]:
+    """The words cut into clauses, each keeping the separator that ends it."""
+    out: list[list[str]] = [[]]
+    for w in words:
+        out[-1].append(w)
+        if w in SEPARATORS and not (w == "that" and len(out[-1]) > 1):
+            out.append([])
+    return [c for c in out if c]
 
 
 def is_motion_plan(plan) -> bool:

@@ -45,6 +45,7 @@ NOT_OBJECTS = frozenset({
     "let", "lets", "do", "does", "say", "says", "got", "better", "nothing", "smack", "youll", "walk",
     "walks", "goes", "think", "guess", "believe", "know", "kind", "sort", "color", "colour", "shape",
     "le", "yo", "tot", "er", "um", "uh", "uhm", "erm", "hmm", "you", "me", "it", "there",
+    "m", "cm", "mm", "ft", "km", "centimeter", "centimeters", "centimetre", "centimetres",
 })
 #: words for a group of things: "a ring of keys" is the keys
 COLLECTIVES = frozenset({"ring", "set", "bunch", "pair", "pile", "stack", "bundle", "pack",

@@ -139,3 +139,15 @@ def test_concurrent_sessions_lose_nothing(tmp_path):
     names = {s.object for s in ObjectMemory(path).sightings()}
     assert names == {f"{n}-{i}" for n in "abc" for i in range(15)}
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
+
+
+def test_a_folder_given_as_the_memory_file_is_refused_and_left_alone(tmp_path):
+    """`chat --memory DIR` had moved the whole folder aside as an "unreadable memory file"."""
+    from assistant.errors import AssistantError
+
+    folder = tmp_path / "work"
+    folder.mkdir()
+    (folder / "notes.txt").write_text("mine")
+    with pytest.raises(AssistantError, match="is a folder.*--memory .*memory.json"):
+        ObjectMemory(folder)
+    assert (folder / "notes.txt").read_text() == "mine" and sorted(p.name for p in tmp_path.iterdir()) == ["work"]
