@@ -115,6 +115,7 @@ class DialogueManager:
         self.on_pose = on_pose
         self.robot_pose = None  # the robot's pose last reported while a task ran (pose_listener)
         self.steps: list[str] = []  # the errand's steps still to do ("…, then go to the bedroom")
+        self._stopped_steps: list[str] = []  # the steps left when the person said "stop" (for "carry on")
         self._stepping = False  # True while the next step starts (it keeps the steps after it)
         self.last_offer: dict | None = None  # the last "Shall I go …?" made (see ``pending``)
         self.pending: dict | None = None
@@ -414,8 +415,12 @@ class DialogueManager:
         if kind == "fetch":
             data["command"] = task_text
         what = f"going to the {room}" if job.what == "on my way" and room else job.what
-        return self._start_job(kind, text, f"OK, carrying on — {what}.", task_text, room, obj, start,
+        steps = self._stopped_steps
+        after = f" After that, {_join([step_place(s) for s in steps], 'and then')}." if steps else ""
+        turn = self._start_job(kind, text, f"OK, carrying on — {what}.{after}", task_text, room, obj, start,
                                intent_name="resume", style=style, **data)
+        self.steps, self._stopped_steps = list(steps), []  # the errand goes on after it
+        return turn
 
     def _do_stop(self, text, start, intent_name="stop") -> Turn:
         self.pending = None
@@ -425,7 +430,9 @@ class DialogueManager:
 
     def stop(self) -> bool:
         """Ask a running task to stop (Ctrl-C); True when one was running. The errand's
-        steps still to do are dropped."""
+        steps still to do are dropped (kept for "carry on")."""
+        if self.steps:
+            self._stopped_steps = self.steps
         self.steps = []
         return self.worker.stop()
 
@@ -1447,7 +1454,7 @@ class DialogueManager:
         object) in the worker; its final :class:`Turn` comes through ``say``/``on_finish``. A
         task the person asks for replaces an errand's steps still to do."""
         if not self._stepping:
-            self.steps = []
+            self.steps, self._stopped_steps = [], []
         turn = self._turn(said, intent_name, reply, kind, "started", start, **data)
         turn.final = False
         self.worker.start(kind, text, task_room, task_object, style, said=said)

@@ -940,6 +940,12 @@ def test_stopping_an_errand_drops_its_steps(services, tmp_path):
     m.handle("stop")
     m.wait(10)
     assert not m.steps and fetcher.texts == ["go to the living room"]
+    # "carry on" takes the errand up again, its steps left with it (they had been lost)
+    fetcher.hold = False
+    turn = m.handle("carry on")
+    assert turn.reply == "OK, carrying on — going to the living room. After that, the bedroom."
+    m.wait(30)
+    assert fetcher.texts == ["go to the living room", "go to the living room", "go to the bedroom"]
 
 
 def test_thanks_before_a_request_and_courtesies_inside_it(services, tmp_path):
