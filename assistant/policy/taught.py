@@ -101,8 +101,13 @@ def check_outlier(demo: Demonstration, others: list[Demonstration]) -> OutlierCh
 
 
 def next_free_path(folder: Path, world: str, scene: str) -> Path:
+    """The next demonstration file in ``folder`` whose name is in use neither there nor in the
+    same RDT's folder of the other kind (taught or held back), so that one name never means two
+    demonstrations (a held one and a confirmed one had both been "…-keyboard-01")."""
+    rdt = folder.name
+    folders = {folder, taught_directory() / rdt, held_directory() / rdt}
     n = 1
-    while (folder / f"{world}-{scene}-keyboard-{n:02d}.json").exists():
+    while any((f / f"{world}-{scene}-keyboard-{n:02d}.json").exists() for f in folders):
         n += 1
     return folder / f"{world}-{scene}-keyboard-{n:02d}.json"
 
@@ -139,14 +144,26 @@ def list_taught() -> list[TaughtFile]:
     return out
 
 
-def find_taught(name: str) -> TaughtFile:
-    """The taught demonstration called ``name`` (``RDT/STEM`` or a unique ``STEM``)."""
+#: the prefix that names the held-back one of two demonstrations of the same name
+HELD_PREFIX = "held:"
+
+
+def find_taught(name: str, held: bool | None = None) -> TaughtFile:
+    """The taught demonstration called ``name`` (``RDT/STEM`` or a unique ``STEM``; ``held:``
+    before it, or ``held``, picks the one held back when a confirmed one has the same name)."""
+    if (name or "").startswith(HELD_PREFIX):
+        name, held = name[len(HELD_PREFIX):], True
     if not _NAME.match(name or ""):
         raise AssistantError(f"{name!r} is not a demonstration name; `assistant teach --list` shows them")
     files = list_taught()
-    found = [f for f in files if f.name == name or f.path.stem == name]
+    found = [f for f in files if (f.name == name or f.path.stem == name) and (held is None or f.held == held)]
     if len(found) == 1:
         return found[0]
+    exact = [f for f in found if f.name == name]
+    if len(exact) == 2 and {f.held for f in exact} == {True, False}:
+        raise AssistantError(f"{name!r} names one demonstration in use and one held back (saved by an earlier "
+                             f"version under the same name): give {name} for the one in use, {HELD_PREFIX}{name} "
+                             "for the held one")
     if len(found) > 1:
         raise AssistantError(f"{name!r} names {len(found)} demonstrations ("
                              + ", ".join(f.name for f in found) + "); give RDT/NAME")
@@ -163,7 +180,10 @@ def forget_taught(name: str) -> TaughtFile:
 
 def accept_held(name: str) -> Path:
     """Confirm a held-back demonstration: move it among the ones used for training."""
-    item = find_taught(name)
+    try:
+        item = find_taught(name, held=True)
+    except UnknownNameError:
+        item = find_taught(name)  # one in use of that name: said so below
     if not item.held:
         raise AssistantError(f"{item.name} is already in use; nothing to accept")
     demo = Demonstration.load(item.path)

@@ -95,3 +95,25 @@ def test_three_teach_runs_at_once_keep_three_files(data):
     saved = {json.loads(out)["saved"] for out, _ in outs}
     assert len(saved) == 3 and all(Path(p).is_file() for p in saved)
     assert len(list((data / "demonstrations" / "couch-front-table").glob("*.json"))) == 3
+
+
+def test_a_held_demonstration_and_a_confirmed_one_never_share_a_name(data, monkeypatch, capsys):
+    """A held-back first try, then a good one: both had been "…-keyboard-01", and neither
+    --accept nor --forget could tell them apart ("names 2 demonstrations …; give RDT/NAME")."""
+    _teach(TEACH, "d 16\nw 60\nq\n", monkeypatch, capsys)  # held back (far from the table)
+    _teach(TEACH, "w 8\nq\n", monkeypatch, capsys)
+    names = [t.name for t in list_taught()]
+    assert len(set(names)) == 2, names
+
+
+def test_two_demonstrations_of_one_name_from_an_earlier_version_can_each_be_named(data, monkeypatch, capsys):
+    _teach(TEACH, "d 16\nw 60\nq\n", monkeypatch, capsys)
+    (held,) = list_taught()
+    used = taught_directory() / held.path.parent.name / held.path.name  # as an earlier version saved it
+    used.parent.mkdir(parents=True)
+    used.write_text(held.path.read_text())
+    code, out = _teach(["teach", "--forget", held.name], "", monkeypatch, capsys)
+    assert code == 2 and f"held:{held.name}" in out.err
+    code, out = _teach(["teach", "--accept", held.name], "", monkeypatch, capsys)  # the held one, plainly
+    assert code == 0 and "accepted" in out.out
+    assert [t.held for t in list_taught()] == [False, False]
