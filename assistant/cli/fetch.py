@@ -101,16 +101,13 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _robot(args):
-    """None for the simulator (the fetcher makes it from the spec); a replay for ``replay:FILE``, whose
-    recorded home and scene fill in --world and --scene when not given."""
-    from assistant.errors import AssistantError
+    """None for the simulator or a real robot (the fetcher opens it from the spec); a replay for
+    ``replay:FILE``, whose recorded home and scene fill in --world and --scene when not given."""
     from assistant.robot import make_robot, parse_robot_spec
 
     spec = parse_robot_spec(args.robot)
-    if spec.scheme == "sim":
-        return None
     if spec.scheme != "replay":
-        raise AssistantError(f"fetch runs on the simulator or a replay for now, not {spec.scheme}")
+        return None
     robot = make_robot(spec)
     recorded = robot.metadata
     args.world = args.world or recorded.get("world") or None

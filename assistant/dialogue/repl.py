@@ -53,6 +53,7 @@ class ChatSession:
         self.history_path = data / "chat_history"
         self.services = Services(perception=args.perception, seed=args.seed,
                                  search=getattr(args, "search", "sensed"), robot=getattr(args, "robot", "sim"))
+        self._check_robot()
         self.view = None
         self._print_lock = threading.RLock()
         self._interrupts = 0
@@ -267,6 +268,19 @@ class ChatSession:
             if self.view is not None:
                 self.view.close()
         return 0
+
+    def _check_robot(self) -> None:
+        """A real robot is connected once before the greeting, so that a wrong port or a robot
+        switched off is said at once (it had greeted as if all was well and failed the first
+        task); each task then connects again."""
+        from assistant.robot import parse_robot_spec
+
+        if parse_robot_spec(self.services.robot).scheme != "p3dx":
+            return
+        from assistant.app import open_robot
+
+        with open_robot(self.services.robot, self.world, self.scene):
+            pass
 
     @property
     def scripted(self) -> bool:

@@ -215,3 +215,16 @@ def test_telling_where_a_thing_is_while_the_robot_searches_for_it_sends_it_there
     out = run.stdout
     assert "I'll go and look for it" in out and "OK, I'll stop searching. Going to the living room." in out, out
     assert "I've stopped" not in out and "still busy" not in out, out
+
+
+def test_a_real_robot_that_is_not_there_is_said_before_the_greeting(tmp_path):
+    import subprocess
+
+    env = dict(os.environ, ASSISTANT_DATA=str(tmp_path / "data"), PYTHONWARNINGS="ignore")
+    missing = str(tmp_path / "ttyUSB9")
+    for command in (["chat", "--world", "apartment"], ["fetch", "go to the couch", "--world", "apartment"]):
+        run = subprocess.run([sys.executable, "-m", "assistant", *command, "--robot", f"p3dx:{missing}"],
+                             input="go to the bedroom\n", capture_output=True, text=True, cwd=str(ROOT), env=env,
+                             timeout=240)
+        assert run.returncode == 2 and f"cannot open serial port {missing}: no such device" in run.stderr, run
+        assert "Hello" not in run.stdout and "Traceback" not in run.stderr
