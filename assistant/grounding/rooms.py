@@ -161,6 +161,24 @@ def first_named_room(records: Sequence[ChunkRecord], world) -> str | None:
     return None
 
 
+#: furniture that says its room by the room's name in any home (common sense, not the map: the
+#: robot knows the rooms, not where the furniture is) — a couch or a desk stands in many rooms
+FURNITURE_ROOM_WORDS = {"bed": "bedroom"}
+
+
+def furniture_room(nodes, world) -> str | None:
+    """The room a command's furniture says when it names no room ("the statue is on the round
+    table next to the bed": the bedroom), when the home has one room of that name; else None."""
+    rooms = room_names_of(world)
+    for node in nodes:
+        for word in (node.target, *(reference for reference, _ in node.pairs)):
+            kind = FURNITURE_ROOM_WORDS.get(str(word or ""))
+            homes = [r for r in rooms if kind and kind in r.split()]
+            if len(homes) == 1:
+                return homes[0]
+    return None
+
+
 def unknown_room_named(words: Sequence[str], world) -> str | None:
     """The first room of :data:`COMMON_ROOMS` the words name as a goal that the home does not
     have ("go to the kitchen" in a home without one), or None."""

@@ -110,3 +110,17 @@ def test_other_names_of_a_room_name_the_homes_room(all_worlds):
     # "hall" is part of the inner hall's name there: no other name of the hallway
     assert "hall" not in room_aliases(rooms)
     assert unknown_room_named("go to the kitchen".split(), all_worlds["two-bedrooms-house"]) == "kitchen"
+
+
+def test_a_bed_says_its_room_when_no_room_is_named():
+    """"the statue is on the round table next to the bed" went to the living room's round table
+    with fetch (the chat found the bedroom); a couch says nothing (an office has one)."""
+    from assistant.grounding.rooms import furniture_room
+    from assistant.grounding.types import RDTNode
+    from assistant.world import load_world
+
+    apartment, studio = load_world("apartment"), load_world("hk-studio")
+    assert furniture_room([RDTNode("table", (("bed", "beside"),))], apartment) == "bedroom"
+    assert furniture_room([RDTNode("bed", ())], apartment) == "bedroom"
+    assert furniture_room([RDTNode("table", (("couch", "front"),))], apartment) is None
+    assert furniture_room([RDTNode("bed", ())], studio) is None  # no bedroom in the studio flat
