@@ -33,6 +33,7 @@ from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.memory import TOLD, TOLD_NOT_SEEN, ObjectMemory
+from assistant.language.retractions import without_retractions
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
@@ -222,7 +223,8 @@ class DialogueManager:
                               f"{error}). Please say it another way.", "none", "failed", start)
 
     def _handle(self, text: str, start: float) -> Turn:
-        text = with_articles(expand_shorthand(drop_courtesies(text)), self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
+        text = with_articles(expand_shorthand(drop_courtesies(without_retractions(text, leading=False))),
+                             self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
         lead = LEADING_THANKS.match(text)
         if lead is not None and classify(lead.group("rest")).name not in ("thanks", "ack", "praise", "empty"):
             # "Thank you. Could you please stop at the bedside table?": the request after the thanks

@@ -49,6 +49,7 @@ from assistant.executor.rooms import room_of
 from assistant.executor.sensing import entity_centre, entity_room, environment_items
 from assistant.executor.spoken import nearest_first, room_from_here, run_moves, spoken_node
 from assistant.grounding.motion import is_motion_plan
+from assistant.grounding.rooms import furniture_room
 from assistant.executor.survey import Surveyor
 from assistant.executor.viewing import in_view, point_viewing_spot, viewing_poses
 from assistant.geometry import Pose2D, point_in_polygon, wrap_angle
@@ -184,7 +185,9 @@ class FetchTask:
             # faces through the nearest opening; "on your left" is said from the start pose
             self._said_from = self.ctx.pose()
             only_moves, here = plan.nodes and all(n.dynamic for n in plan.nodes), self.ctx.pose()
-            room = room_of(self.ctx.world, here) if only_moves else room_from_here(self.ctx.world, here, plan)
+            # "… next to the bed": the bedroom, whatever room the robot is in (common sense)
+            room = room_of(self.ctx.world, here) if only_moves else (
+                furniture_room(plan.nodes, self.ctx.world) or room_from_here(self.ctx.world, here, plan))
             if room is None:
                 unused = [w for w in getattr(plan, "unused", []) or []]
                 extra = f" (words not understood: {', '.join(unused)})" if unused else ""

@@ -14,11 +14,12 @@ from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
 from assistant.grounding.destination import said_destination
 from assistant.grounding.motion import read_motion
-from assistant.grounding.rooms import (first_named_room, furniture_room, named_room_groundings, room_names_of,
+from assistant.grounding.rooms import (first_named_room, named_room_groundings, room_names_of,
                                        side_room_groundings)
 from assistant.grounding.said import said_reference_groundings
 from assistant.rdt import NO_TARGET
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
+from assistant.language.retractions import without_retractions
 
 
 #: longest command accepted, in words (a spoken fetch command has a few dozen)
@@ -102,7 +103,7 @@ class CommandParser:
         if len(text or "") > MAX_CHARS:
             raise AssistantError(f"the command has {len(text)} characters, more than {MAX_CHARS}; "
                                  "say it as several shorter commands")
-        analysis = self.language.analyse(text or "")
+        analysis = self.language.analyse(without_retractions(text or ""))  # "the bedroom, no wait, the office"
         if len(analysis.tokens) > MAX_WORDS:
             raise AssistantError(f"the command has {len(analysis.tokens)} words, more than {MAX_WORDS}; "
                                  "say it as several shorter commands")
@@ -119,8 +120,6 @@ class CommandParser:
             if said is not None and (last is None or last.target == NO_TARGET or (said.referenced and (
                     last.target != said.target or not last.referenced))):
                 plan.nodes, plan.support, plan.kind = [said], said.support, "static"
-        if plan.room is None and plan.nodes:  # "… next to the bed": the bedroom
-            plan.room = furniture_room(plan.nodes, self.world)
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
                                    analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)

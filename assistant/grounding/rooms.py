@@ -167,8 +167,9 @@ FURNITURE_ROOM_WORDS = {"bed": "bedroom"}
 
 
 def furniture_room(nodes, world) -> str | None:
-    """The room a command's furniture says when it names no room ("the statue is on the round
-    table next to the bed": the bedroom), when the home has one room of that name; else None."""
+    """The room a plan's furniture says when the plan names no room ("the statue is on the round
+    table next to the bed": the bedroom), when the home has one room of that name; else None.
+    The executor goes there (the plan's room stays what the words said)."""
     rooms = room_names_of(world)
     for node in nodes:
         for word in (node.target, *(reference for reference, _ in node.pairs)):

@@ -15,6 +15,7 @@ from assistant.errors import AssistantError, UnknownNameError
 from assistant.grounding import GroundingPlan, RDTNode
 
 TEXT = "the glasses case is on the table in front of the couch in the living room"
+BED_TEXT = "the statue is on the round table next to the bed"
 
 
 class _Parsed:
@@ -26,6 +27,8 @@ class _StandInParser:
     def parse(self, text):
         if text == TEXT:
             return _Parsed(GroundingPlan("living room", [RDTNode("table", (("couch", "front"),))], "glasses case"))
+        if text == BED_TEXT:  # no room said
+            return _Parsed(GroundingPlan(None, [RDTNode("table", (("bed", "beside"),))], "statue"))
         from assistant.grounding.motion import read_motion
 
         moves = read_motion(text.split())  # the parser's own reading of moves alone
@@ -101,6 +104,14 @@ def test_moves_alone_are_carried_out_where_the_robot_is(fetcher, apartment):
     assert back.success and moved == pytest.approx(-0.5, abs=0.1)  # backwards, still facing ahead
     assert abs(math.remainder(theta - start.theta, 2 * math.pi)) < math.radians(10)
     assert back.data["sim_seconds"] < 10  # no survey turn
+
+
+def test_a_command_naming_no_room_but_a_bed_goes_to_the_bedroom(fetcher, apartment):
+    """From the hallway, "the round table next to the bed" had been the living room's round
+    table (the room the robot faced); the plan keeps no room, the executor takes the bedroom."""
+    result = fetcher.fetch(BED_TEXT, apartment, "original", "oracle")
+    assert result.data["plan"]["room"] is None
+    assert result.success and result.data["executor"]["target_furniture"]["id"] == "roundtable_2"
 
 
 def test_a_stopped_fetch_ends_stopped_at_once(fetcher, apartment):
