@@ -18,14 +18,18 @@ __all__ = ["split_steps", "step_place", "STEP_BREAK"]
 
 #: where one step of an errand ends and the next begins
 STEP_BREAK = re.compile(r"\s*,?\s*\b(?:and then|then|after that|afterwards|after this|and after that)\b\s*,?\s*"
-                        r"|\s*[.;!]+\s+")
+                        r"|\s*[.;!]+\s+", re.IGNORECASE)
+#: words that number a step, dropped from its text ("First, go to …", "Finally take …", "step 2 …")
+STEP_NUMBER = re.compile(r"^(?:first(?:ly)?|second(?:ly)?|third(?:ly)?|next|finally|lastly|last|now|"
+                         r"step (?:\d+|one|two|three|four|five)|\d+[.):])[,:]?\s+", re.IGNORECASE)
 
 
 def split_steps(text: str, room_of: Callable[[str], str | None]) -> list[str]:
     """The steps of a request (see the module), or ``[text]`` when it is one. ``room_of(part)``
     gives the room a part sends the robot to, or None. A part that only names the room ("then
     the bedroom") becomes "go to the bedroom"."""
-    parts = [p.strip(" ,") for p in STEP_BREAK.split(text.strip().rstrip(".!")) if p and p.strip(" ,")]
+    parts = [STEP_NUMBER.sub("", p.strip(" ,")) for p in STEP_BREAK.split(text.strip().rstrip(".!"))
+             if p and p.strip(" ,")]
     if len(parts) < 2:
         return [text]
     rooms = [room_of(p) for p in parts]

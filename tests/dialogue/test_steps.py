@@ -23,6 +23,12 @@ def room_of(part: str):
     ("go to the bedroom and then the living room", ["go to the bedroom", "go to the living room"]),
     ("go through the living room into the inner hall then into the small room",
      ["go through the living room into the inner hall", "go into the small room"]),
+    # numbered steps, a capital "Then": the numbering words are not said back
+    ("First, go to the end of the living room. Then go through the door into the inner hall. Finally take the "
+     "door straight ahead into the small room", ["go to the end of the living room",
+                                                 "go through the door into the inner hall",
+                                                 "take the door straight ahead into the small room"]),
+    ("step 1 go to the bedroom. step 2 go to the living room", ["go to the bedroom", "go to the living room"]),
 ])
 def test_an_errand_is_split_into_its_steps(text, steps):
     assert split_steps(text, room_of) == steps
