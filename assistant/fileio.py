@@ -227,15 +227,40 @@ def cached(path: str | os.PathLike[str], make, expected: type | tuple[type, ...]
     return obj
 
 
+_YAML_LOADER: list = []
+
+
+def _yaml_loader():
+    """PyYAML's safe loader with YAML 1.2's booleans: only ``true`` and ``false`` (any case).
+    YAML 1.1 also reads on/off/yes/no/y/n as booleans, so the key ``on:`` of a world file's
+    object (the furniture it lies on) became ``True`` and was refused as an unknown key, and a
+    scripted ``say: no`` became False."""
+    import re
+
+    import yaml
+
+    if not _YAML_LOADER:
+        class Loader(yaml.SafeLoader):
+            pass
+
+        Loader.yaml_implicit_resolvers = {
+            first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
+            for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()}
+        Loader.add_implicit_resolver("tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+                                     list("tTfF"))
+        _YAML_LOADER.append(Loader)
+    return _YAML_LOADER[0]
+
+
 def read_yaml(text: str):
-    """``yaml.safe_load(text)`` for a file a person gave: nesting too deep for the parser (it
-    recurses once per level and hit Python's limit with a traceback) is a ``yaml.YAMLError``
-    too, so a reader's one ``except yaml.YAMLError`` turns every kind of bad YAML into its
-    one-line message."""
+    """The data of a YAML file a person gave (PyYAML's safe loader, with YAML 1.2's booleans:
+    :func:`_yaml_loader`): nesting too deep for the parser (it recurses once per level and hit
+    Python's limit with a traceback) is a ``yaml.YAMLError`` too, so a reader's one ``except
+    yaml.YAMLError`` turns every kind of bad YAML into its one-line message."""
     import yaml
 
     try:
-        return yaml.safe_load(text)
+        return yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
     except RecursionError:
         raise yaml.YAMLError("nested too deeply (hundreds of levels of [ or {)") from None
 

@@ -111,3 +111,16 @@ def test_checks_find_a_floating_object_and_an_unreachable_room(apartment):
     problems = [str(p) for p in check_world(parse_world(text))]
     assert any("laptop at (2.0, 2.0) is not on dinnertable_1" in p for p in problems)
     assert any("cannot reach the living room" in p for p in problems)
+
+
+def test_the_key_on_and_yes_no_values_are_read_as_written(tmp_path):
+    """YAML 1.1 reads on/off/yes/no as booleans: an object's ``on: couch_1`` written without
+    quotes was refused as the unknown key ``True`` (the file's own keys list 'on')."""
+    from assistant.fileio import read_yaml
+
+    text = dump_world(load_world("apartment")).replace("'on':", "on:")
+    assert "'on'" not in text
+    path = tmp_path / "mine.yaml"
+    path.write_text(text)
+    assert load_world(path) == load_world("apartment")
+    assert read_yaml("say: no\nopen: true\nloud: off") == {"say": "no", "open": True, "loud": "off"}
