@@ -33,8 +33,8 @@ TOLD_PLACES = (
     r" (?P<place>" + _PLACE_WORDS + r" [a-z ]+?)(?: usually| always| normally| most of the time)?$",
     r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|actually|no|sorry) )*(?:i|ive|i have|weve|we have|we) "
     r"(?:just )?(?:put|left|placed|keep|moved) (?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!(?:next|on|in|under|by|"
-    r"at|near|beside|behind|inside|to|onto|into|back)\b)[a-z]+)?|it|them) "
-    r"(?:back )?(?P<place>(?:" + _PLACE_WORDS + r"|to|onto|into) [a-z ]+?)(?: for you| now| again| today)?$",
+    r"at|near|beside|behind|inside|to|onto|into|back|down|away|up|there|here)\b)[a-z]+)?|it|them) "
+    r"(?:back |down |away |up )?(?P<place>(?:" + _PLACE_WORDS + r"|to|onto|into) [a-z ]+?)(?: for you| now| again| today)?$",
 )
 _TOLD = tuple(re.compile(p) for p in TOLD_PLACES)
 
@@ -80,6 +80,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("dont", (r"^(please |no |no no )?(dont|do not|never|better not)( you)? (go|bring|fetch|get|come|drive|move|turn|"
               r"look|search|touch|enter|leave)\b",)),
     ("repeat", (r"\b(repeat that|say that again|say it again|what did you (just )?say|come again)\b",
+                r"\b(?:didnt|did not|couldnt|could not) (?:catch|hear|get) (?:that|you|what you said)\b",
                 r"^(pardon|sorry what|what|huh|repeat)$",
                 r"^(?:(?:please|sorry|can you|could you|robot) )*(repeat|repeat it|say again|what do you mean|what did you "
                 r"mean|what does that mean|i dont understand|i didnt understand|i didnt get that|pardon me|"
@@ -133,6 +134,11 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                    r"are you (ok|okay|alright|well))( today| robot| this morning| this evening)?$",)),
     ("listening", (r"^" + ADDRESS + r"(are you (listening|awake|on|there|with me)|can you hear me|do you hear me|"
                    r"you there|are you still there|anybody there|hello are you there)( robot| now)?$",)),
+    # how the person feels: "I'm feeling a bit lonely today", "sorry dear, I'm a bit confused"
+    ("feeling", (r"^(?:(?:oh|well|sorry|um|uh|dear|robot|honestly|you know) )*(?:im|i am|i feel|im feeling|i am feeling|"
+                 r"i feel so|feeling)(?: a bit| a little| so| very| quite| really| rather| kind of| bit)* (?:lonely|sad|"
+                 r"tired|bored|down|low|unwell|sick|ill|poorly|confused|muddled|scared|frightened|worried|anxious|dizzy|"
+                 r"lost|upset|cold|weak)(?: today| now| tonight| this morning| again| dear| robot)*$",)),
     ("smalltalk", (r"^" + ADDRESS + r"(how are you|how are you doing|how do you do|whats your name|what is your "
                    r"name|who are you|are you a robot|what are you)( today| robot)?$",)),
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
@@ -144,6 +150,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                       r"\b(make|cook|get|bring|fix) (me |us )?(a |some )?(cup of |mug of )?(tea|coffee|dinner|lunch|"
                       r"breakfast|food|a sandwich|something to eat|a drink)\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b",
+                      r"\bturn (?:the |my )?(?:light|lights|lamp|tv|telly|television|radio|heating|music|kettle|oven)"
+                      r" (?:on|off|up|down)\b",
                       r"\b(battery|batteries|charge level|charged|charging|power level)\b")),
     # doubt about the last answer, or a request to look once more: "are you sure?", "check again"
     ("again", (r"^(?:(?:but|and|so|hmm|really|oh) )*are you (?:sure|certain|positive)(?: (?:about that|its (?:not )?there|"
@@ -226,8 +234,13 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("no", (r"^(no|nope|nah|no thanks|no thank you|dont|do not|n|not now|leave it)$",
             r"^(no|nope|nah|not|not now|not right now|not yet|maybe later|later|no need|its fine|its ok|"
             r"(no )?(just )?leave (it|them)( there| be| alone)?)( thanks| thank you| robot| then| for now)*$")),
-    ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",)),
-    ("praise", (r"^(that is |thats |very |youre a |you are a |what a )?(good robot|good boy|good girl|nice work|nice one|"
+    ("greet", (r"^(hi|hello|hey|hiya|good (morning|afternoon|evening)|howdy)( there| robot)?$",
+               # with a name: "hello there, my name is Mary"
+               r"^(?:hi|hello|hey|hiya|good (?:morning|afternoon|evening))(?: there| robot)? (?:my name is|my names|"
+               r"im|i am|this is|its) [a-z]+$")),
+    ("praise", (r"^(?:youre|you are) (?:a star|a gem|a treasure|the best|great|wonderful|brilliant|so clever|a "
+                r"good robot|very clever|amazing)(?: robot| dear| thanks| thank you)*$",
+                r"^(that is |thats |very |youre a |you are a |what a )?(good robot|good boy|good girl|nice work|nice one|"
                 r"great job|well done|good job|clever (robot|thing|little thing|boy|girl)|great|awesome|perfect|"
                 r"brilliant|excellent|wonderful|lovely|clever)( robot| thanks| thank you)*$",
                 r"^(ok |okay |oh )?(good|great|nice|cool|super|lovely|brilliant|excellent|good good)( robot| thanks| thank you)*$",
@@ -427,7 +440,7 @@ def teach_phrase(text: str) -> str | None:
 NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "which_home", "bye", "thanks",
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
-                          "where_check", "resume", "emergency", "wellbeing", "listening",
+                          "where_check", "resume", "emergency", "wellbeing", "listening", "feeling",
                           "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see", "ack", "again"})
 
 #: words of a request that are politeness, not content (never "unknown words")

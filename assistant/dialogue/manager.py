@@ -68,6 +68,13 @@ IT_IS_AT = (r"^(?:(?:no|sorry|oh|actually|well|i think|wrong room|wrong place)\b
             r"beside|behind|inside|in front of) [a-z ]+)$")
 #: the most things "what did you see?" lists
 SEEN_LIST_MAX = 4
+#: words that ask for a thing (a fetch or a search), for a thing the catalogue does not know
+REQUEST_WORDS = (r"\b(?:find|bring|get|fetch|look|looking|search|searching|where|need|want|grab|take|show|lost|"
+                 r"misplaced|check|seen|locate|spot|give|hand|pass)\b")
+#: when a told place was so, said after it ("… on the desk this morning"), dropped from the place
+WHEN_SAID = (r"\s+(?:this (?:morning|afternoon|evening)|last night|tonight|yesterday(?: evening| morning)?|earlier"
+             r"(?: today| on)?|today|just now|a (?:minute|moment|while) ago|an hour ago|(?:a few|some|two|ten) "
+             r"minutes ago|before (?:lunch|dinner|breakfast|bed))$")
 #: intents about the task under way, not to wait for its end (``about_the_task``)
 DURING_TASK = frozenset({"stop", "cancel", "emergency", "status", "start_over", "command"})
 
@@ -783,7 +790,8 @@ class DialogueManager:
                 turn.reply = f"I haven't seen your {obj} yet, so I'll go and look. {turn.reply}"
                 self.last_said = turn.reply
             return turn
-        agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word)
+        agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word) \
+            and self._same_model(place, seen)
         at = self._seen_at(obj, seen)
         if agrees:
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
@@ -791,10 +799,27 @@ class DialogueManager:
             reply = f"Yes — {at}. Shall I go over to {it_them(obj)}?"
         else:
             self.pending = {"kind": "confirm", "command": check, "object": obj}
-            reply = f"{'Not as far as I know' if seen.source == 'told' else 'Not when I last looked'}: {at}. " \
+            reply = f"{'Not as far as I know' if seen.told else 'Not when I last looked'}: {at}. " \
                     f"Shall I go and check {place}?"
         return self._turn(text, intent.name, reply, "answer", "answered", start, object=obj, source="memory",
                           memory=seen.to_dict(), agrees=agrees)
+
+    def _said_models(self, place: str) -> set[str]:
+        """The furniture models of this home a place names ("on the coffee table" → coffee table)."""
+        return {f.model for f in self.world.scene(self.scene).furniture
+                if re.search(rf"\b{re.escape(f.model)}s?\b", place)}
+
+    def _same_model(self, place: str, seen) -> bool:
+        """Whether a remembered place can be the kind of furniture a place names: "is it on the
+        coffee table?" of a mug seen on a round table is a no (it had said "Yes — … on the table")."""
+        said = self._said_models(place)
+        if not said:
+            return True
+        items = {f.id: f for f in self.world.scene(self.scene).furniture}
+        if seen.furniture in items:
+            return items[seen.furniture].model in said
+        models = self._said_models(seen.phrase or "")
+        return not models or bool(models & said)
 
     def _from_map(self, text: str, intent, obj: str, room: str | None, start: float) -> Turn | None:
         """A yes-or-no place question answered from the simulator's map of the home (the oracle
@@ -820,7 +845,11 @@ class DialogueManager:
         glasses on the table by the bed": kept in the memory as told (no drive to check); the
         room is the one named, or the only one with the furniture named."""
         thing, place = told_place(intent.text)
+        place = re.sub(WHEN_SAID, "", place).strip()  # "… to the bedroom this morning"
         place = re.sub(r"^into ", "in ", re.sub(r"^(to|onto) ", "on ", place))  # "I moved it to the coffee table"
+        if (said_room := self._room_in(place)) is not None and re.fullmatch(
+                rf"(?:on|in|at) (?:the|my|our) {re.escape(said_room)}", place):
+            place = f"in the {said_room}"  # "I moved it to the bedroom": in it, not on it
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
         obj = self._last_object() if noun in ("it", "them") else self._object_in(thing)[0]
         if obj is None and noun in ("it", "them"):
@@ -851,7 +880,7 @@ class DialogueManager:
         rooms = self._rooms_with(words) if words else []
         if len(rooms) > 1:  # "on the desk": the rooms with a desk, not every room with a table
             furniture = self.world.scene(self.scene).furniture
-            models = {f.model for f in furniture if re.search(rf"\b{re.escape(f.model)}s?\b", place)}
+            models = self._said_models(place)
             with_models = [r for r in rooms if all(any(f.room == r and f.model == m for f in furniture)
                                                    for m in models)]
             rooms = with_models if models and with_models else rooms
@@ -1142,6 +1171,13 @@ class DialogueManager:
             if seen is not None and seen.room:
                 room = seen.room
                 text = f"{text} in the {room}"
+            elif not force and obj and not plan.nodes and not is_object_word(obj) and not re.search(
+                    REQUEST_WORDS, said.lower()):
+                # "i'm feeling a bit lonely today", "thanks, you're a star": no thing asked for
+                # (it had asked "Which room should I look for your today in …?")
+                return self._turn(said, "command", "Sorry, I didn't understand that. I can look for your things, "
+                                  "go to a room or a piece of furniture, or remember where you put something — say "
+                                  "\"help\" for examples.", "none", "not_understood", start, unknown=[obj])
             elif not force:
                 self.pending = {"kind": "room", "text": text, "original": said, "object": obj}
                 rooms = _join(["the " + r for r in self.rooms], "or")

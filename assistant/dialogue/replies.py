@@ -137,9 +137,10 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             ctx.memory.forget(ctx.world.name, obj)
             data["forgot"] = True
             here += " It isn't where I saw it last, so I've forgotten that place."
-        elif before is None and item is not None and names_furniture(said or text):
+        elif (before is None or before.told) and item is not None and names_furniture(said or text):
             # "my hearing aid is on the bed": kept as the person said it, with the looking done,
-            # so that "where is my hearing aid?" answers with it
+            # so that "where is my hearing aid?" answers with it (a place told before and looked
+            # at now too: it had answered "You told me … It's in this room")
             ctx.memory.remember(ctx.world.name, obj, item.room, item.id, item.word, phrase, source=TOLD_NOT_SEEN)
             data["remembered"] = TOLD_NOT_SEEN
         if ctx.services.search_mode == "sensed":

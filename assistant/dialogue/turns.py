@@ -19,6 +19,9 @@ SOCIAL_REPLIES = {
     "thanks": "You're welcome.",
     "praise": "Thank you — I'm glad I could help.",
     "wellbeing": "I'm fine, thank you — ready to help. What can I do for you?",
+    "feeling": "I'm sorry to hear that. I'm here: I can look for your things, tell you where they are, or go "
+               "somewhere for you — for example \"where are my glasses?\". If you feel unwell, please call someone "
+               "close to you or your care line.",
     "listening": "Yes, I'm here and listening. What can I do for you?",
     "emergency": "I can't call anyone or help you up myself. Please use your alarm button or your phone to call "
                  "for help now — 999, 911 or 112, or someone close by. I'm staying here.",

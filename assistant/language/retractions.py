@@ -7,6 +7,8 @@ the correction, and the first room said wins. :func:`without_retractions` rewrit
 before it is parsed: the clause before a retraction marker (:data:`MARKERS`) has its last
 phrase replaced by the phrase said after the marker —
 
+* a side, an end, an order or a size after the marker ("on the left I mean right") replaces
+  the clause's last word of that kind (:data:`SWAPPED`) and what follows it;
 * a noun phrase after the marker ("the living room") replaces the clause's last noun phrase
   (from its last article or possessive on);
 * a place after it ("on the desk at the back") replaces the clause's place (from its first
@@ -39,6 +41,7 @@ _PREPOSITIONS = r"(?:on|in|at|by|near|next|under|behind|beside|besides|inside|in
                 r"across|against|outside|over|opposite)"
 _LEAD = re.compile(r"^(?:(?:it|they)\s*(?:'?s|'re|\s+is|\s+are|\s+was|\s+were)|its|theyre|it\s+s|they\s+re)\s+",
                    re.IGNORECASE)
+_LEADING_FILLERS = re.compile(r"^(?:(?:sorry|oh|um|uh|er|well|ah|hmm|actually|wait|no|oops)[\s,.!-]+)+", re.IGNORECASE)
 _TRAILING_SORRY = re.compile(r"[\s,]+sorry\s*[.!]*$", re.IGNORECASE)
 
 
@@ -48,8 +51,10 @@ def without_retractions(text: str, leading: bool = True) -> str:
     ``leading`` False, a text that starts with a marker is left as it is: in a conversation "no
     wait, the living room" takes back what the robot is doing, not words of the same sentence."""
     said_first = text
-    if not leading and _MARKER.match(text.strip()):
-        return text
+    first = _MARKER.search(text)
+    if not leading and first is not None and not _LEADING_FILLERS.sub("", text[:first.start()].strip() + " ").strip(
+            " ,.!-"):
+        return text  # "no wait, the living room", "sorry, I meant the bedroom": the dialogue's to read
     for _ in range(8):  # a few corrections in one breath at most
         m = _MARKER.search(text)
         if m is None:
@@ -70,9 +75,20 @@ def without_retractions(text: str, leading: bool = True) -> str:
     return text if text.strip() else said_first
 
 
+#: words said in place of one another: "on the left I mean right" corrects the side only
+SWAPPED = (frozenset({"left", "right"}), frozenset({"front", "back", "behind", "ahead"}), frozenset({"near", "far"}),
+           frozenset({"first", "second", "third", "fourth", "last", "next"}),
+           frozenset({"big", "small", "large", "little", "low", "high", "tall", "bigger", "smaller"}))
+
+
 def _replaced(clause: str, said: str) -> str:
     """``clause`` with the part ``said`` corrects replaced by it."""
     first = said.split()[0].lower() if said.split() else ""
+    swapped = next((kind for kind in SWAPPED if first in kind), None)
+    if swapped is not None:  # "in the room on the left i mean right …": the side, and what follows
+        last = [m for m in re.finditer(r"[A-Za-z]+", clause) if m.group(0).lower() in swapped]
+        if last:
+            return clause[:last[-1].start()] + said
     if re.fullmatch(_DETERMINERS, first):
         phrases = list(re.finditer(rf"\b{_DETERMINERS}\b", clause, re.IGNORECASE))
         if phrases:

@@ -261,3 +261,14 @@ def test_answers_doubts_and_follow_ups(text, intent):
 ])
 def test_a_fifth_round_of_what_people_said(text, intent):
     assert classify(expand_shorthand(text)).name == intent
+
+
+@pytest.mark.parametrize("said, intent", [
+    ("i'm feeling a bit lonely today", "feeling"), ("sorry dear, I'm a bit confused", "feeling"),
+    ("hello there, my name is Mary", "greet"), ("thanks, you're a star", "thanks"), ("you're a star", "praise"),
+    ("I didn't catch that, repeat please", "repeat"), ("can you turn the lights off", "out_of_scope"),
+    ("is that right?", "again"), ("how do you know?", "again"), ("I'm looking for my keys", "where"),
+])
+def test_what_people_say_that_asks_for_no_thing(said, intent):
+    """These had been fetch commands: "Which room should I look for your today in …?"."""
+    assert classify(said).name == intent

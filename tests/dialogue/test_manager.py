@@ -156,6 +156,12 @@ def test_a_place_told_and_not_seen_there_is_kept_as_told(services, tmp_path):
                             "couldn't see it there when I looked.") and "all over the home" in reply
     assert m.pending == {"kind": "confirm", "search": "hearing aid", "object": "hearing aid"}
     assert "hearing aid" in m.handle("what have you seen?").reply  # told, not among the things seen
+    m.handle("no")
+    m.handle("I've put my glasses case on the bed")  # told, kept as told; then looked at and not seen
+    assert m.memory.recall("apartment", "glasses case").source == "told"
+    m.handle("bring me my glasses case from the bed")
+    m.wait(10)
+    assert m.memory.recall("apartment", "glasses case").source == "told, not seen"
 
 
 def test_a_doubt_is_answered_with_what_the_robot_goes_by(services, tmp_path):
@@ -170,6 +176,28 @@ def test_a_doubt_is_answered_with_what_the_robot_goes_by(services, tmp_path):
             m.handle("no")
     finally:
         m.services.search_mode = "sensed"
+
+
+def test_a_place_of_another_kind_of_table_is_a_no(services, tmp_path):
+    """The mug seen on the hexagon table: "is it on the coffee table?" had been "Yes — … on the
+    table" (any table agreed)."""
+    m = make(services, tmp_path, StandInFetcher())
+    m.memory.remember("apartment", "mug", "bedroom", "hexagontable_1", "table", "on the table by the chairs")
+    m.handle("where is my mug?")
+    assert m.handle("is it on the coffee table?").reply.startswith("Not when I last looked: I saw your mug")
+    assert m.handle("is it on the hexagon table?").reply.startswith("Yes — I saw your mug")
+    assert m.handle("is it on a table?").reply.startswith("Yes — ")
+
+
+def test_what_asks_for_no_thing_is_not_a_search_and_told_places_read_as_said(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    for said in ("the weather is nice", "my name is Mary", "that was a long day"):
+        turn = m.handle(said)  # had been "Which room should I look for your weather in …?"
+        assert turn.outcome == "not_understood" and "Which room" not in turn.reply, said
+    assert m.handle("i put my phone down next to the couch").reply == \
+        "OK — I'll remember that your cell phone is next to the couch in the living room."  # was "your phone down"
+    assert m.handle("i moved my mug to the bedroom this morning").reply == \
+        "OK — I'll remember that your mug is in the bedroom."  # was "on the bedroom this morning in the bedroom"
 
 
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):

@@ -15,6 +15,10 @@ from assistant.language.retractions import without_retractions
     ("the mug is in the office, in front of the sofa - wait no, its on the desk. no actually it IS on the coffee "
      "table sorry", "the mug is in the office, on the coffee table"),
     ("head to the kitchen, oops, the living room", "head to the living room"),
+    # a side, an end or an order taken back: only that word and what follows it
+    ("the keys are in the room on the left i mean right by the lamp", "the keys are in the room on the right by the lamp"),
+    ("turn left no sorry right and go through the door", "turn right and go through the door"),
+    ("it's on the second shelf, wait no, first", "it's on the first"),
 ])
 def test_the_correction_replaces_what_it_corrects(said, meant):
     assert without_retractions(said) == meant
@@ -29,5 +33,6 @@ def test_words_that_take_nothing_back_stay(said):
 
 
 def test_a_leading_marker_is_left_to_the_dialogue_when_asked():
-    assert without_retractions("no wait, the living room", leading=False) == "no wait, the living room"
+    for said in ("no wait, the living room", "sorry, I meant the bedroom", "oh no wait, the couch"):
+        assert without_retractions(said, leading=False) == said
     assert without_retractions("no wait, the living room") == "the living room"
