@@ -44,7 +44,7 @@ from assistant.generation import is_are, some
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
 from assistant.grounding.objects import article, is_object_word, plural, singular
-from assistant.grounding.rooms import COMMON_ROOMS, ROOM_ALIASES, unknown_room_named
+from assistant.grounding.rooms import COMMON_ROOMS, ROOM_ALIASES, room_aliases, unknown_room_named
 from assistant.grounding.vocabulary import FURNITURE_WORDS, NO_TARGET, STRUCTURE_REFERENCES, furniture_category
 #: every other name of a room ("lounge", "study"): said as a thing, it is no thing
 ROOM_ALIASES_SAID = frozenset(a for aliases in ROOM_ALIASES.values() for a in aliases)
@@ -529,8 +529,13 @@ class DialogueManager:
                           "answer", "answered", start)
 
     def _room_in(self, text: str) -> str | None:
-        """The first of this home's rooms named in ``text`` (as whole words), or None."""
-        return next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text)), None)
+        """The first of this home's rooms named in ``text`` (as whole words), by its name or another
+        ("the lounge": the living room), or None."""
+        named = next((r for r in self.rooms if re.search(rf"\b{re.escape(r)}\b", text)), None)
+        if named is None:
+            named = next((room for alias, room in room_aliases(self.rooms).items()
+                          if re.search(rf"\b{re.escape(alias)}\b", text)), None)
+        return named
 
     def _no_room(self, said: str, intent_name: str, missing: str, start: float, outcome: str = "answered") -> Turn:
         """"There is no kitchen here; the rooms are …": a room this home does not have."""

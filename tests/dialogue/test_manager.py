@@ -200,6 +200,12 @@ def test_what_asks_for_no_thing_is_not_a_search_and_told_places_read_as_said(ser
         "OK — I'll remember that your mug is in the bedroom."  # was "on the bedroom this morning in the bedroom"
 
 
+def test_a_room_by_another_name_in_a_question(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    reply = m.handle("what's in the lounge?").reply  # had listed both rooms
+    assert reply.startswith("In the living room I know of") and "bedroom" not in reply
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
