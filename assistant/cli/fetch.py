@@ -144,8 +144,9 @@ def _print(d: dict) -> None:
     print(f"final pose: ({fp[0]:.2f}, {fp[1]:.2f}, {fp[2]:.2f} rad)   robot said: {d['executor']['message']}")
     tv = d["target_visible"]
     where = d["target_position"]
-    print(f"{d['object'] or 'object'} at {where}: {tv['pixels']} pixels in view"
-          + (f" at {tv['distance']:.2f} m" if tv["distance"] is not None else ""))
+    if where is not None:  # (a command that names no object has none to see: "turn around")
+        print(f"{d['object'] or 'object'} at {where}: {tv['pixels']} pixels in view"
+              + (f" at {tv['distance']:.2f} m" if tv["distance"] is not None else ""))
     print(("SUCCESS" if d["success"] else f"FAILED: {d['failure']}")
           + f"   ({d['sim_seconds']:.1f} s simulated, {d['wall_seconds']:.1f} s wall-clock)")
 

@@ -87,6 +87,33 @@ def amount_goal(pose: Pose2D, direction: str, distance_m: float | None, degrees:
     return Pose2D(pose.x + d * math.cos(angle), pose.y + d * math.sin(angle), heading)
 
 
+#: how near a counted move's end may come to a wall or furniture (metres, besides the robot's own
+#: clearance), and the least way worth driving when the full way is blocked
+STOP_SHORT_M = 0.15
+LEAST_MOVE_M = 0.2
+
+
+def free_part(occupancy, pose: Pose2D, goal: Pose2D, step_m: float = 0.05) -> tuple[Pose2D, float | None]:
+    """The goal of a counted move, or — when the straight way to it leaves the free floor of the
+    map (a wall, known furniture, the map's edge) — the farthest free point on that way, kept
+    ``STOP_SHORT_M`` back, with the metres it goes (None when the whole way is free). A way
+    blocked at once gives the goal itself (the move then fails and says why)."""
+    length = math.hypot(goal.x - pose.x, goal.y - pose.y)
+    if length < step_m:
+        return goal, None
+    ux, uy = (goal.x - pose.x) / length, (goal.y - pose.y) / length
+    along = np.arange(step_m, length + step_m / 2, step_m)
+    points = np.column_stack([pose.x + ux * along, pose.y + uy * along])
+    need = occupancy.robot_radius_m + occupancy.margin_m
+    free = occupancy.clearance_at(points) >= need
+    if free.all():
+        return goal, None
+    reach = float(along[np.argmin(free)] - step_m - STOP_SHORT_M) if free[0] else 0.0
+    if reach < LEAST_MOVE_M:
+        return goal, None
+    return Pose2D(pose.x + ux * reach, pose.y + uy * reach, goal.theta), reach
+
+
 def passing_goal(pose: Pose2D, centre: tuple[float, float], extent_m: float) -> Pose2D:
     """A pose just past furniture centred at ``centre`` (its largest extent ``extent_m``), on
     the far side from ``pose``, facing on in the same direction."""
@@ -135,8 +162,10 @@ def run_moves(ctx, plan, reports: list[NodeReport]) -> tuple[ExecutionStatus, st
     """Carry out a plan of moves alone from where the robot is, node by node (a short move back
     reverses, :func:`~assistant.grounding.motion.reverses`; the rest as :func:`amount_goal`
     says); ``(status, message)`` — the first node that could not be carried out ends it."""
+    shortfalls: list[str] = []  # moves cut short by a wall or furniture ("only 2.1 m of the 3.0 m")
     for node in plan.nodes:
         rdt = node.rdts[0]
+        short_m = None
         report = NodeReport(str(rdt), "dynamic", ExecutionStatus.SUCCESS.value)
         reports.append(report)
         if reverses(node):
@@ -144,11 +173,21 @@ def run_moves(ctx, plan, reports: list[NodeReport]) -> tuple[ExecutionStatus, st
         else:
             pose = ctx.pose()
             goal = amount_goal(pose, rdt.direction, node.distance_m, node.degrees)
+            short_m = None
+            if node.distance_m is not None:  # "go forward three meters" towards a wall 2 m away: as far as it can
+                goal, short_m = free_part(ctx.obstacles.occupancy(), pose, goal)
             report.move_to = [round(goal.x, 3), round(goal.y, 3), round(goal.theta, 4)]
             moved = ctx.turn_to(goal.theta) if node.distance_m is None else ctx.go_to((goal.x, goal.y), goal.theta)
+            if short_m is not None and moved.status is ExecutionStatus.SUCCESS:
+                shortfalls.append(f"only {short_m:.1f} m of the {node.distance_m:.1f} m")
         report.status, report.message = moved.status.value, moved.message
+        if shortfalls and short_m is not None:
+            report.message = f"{shortfalls[-1]}: a wall or furniture is in the way"
         ctx.event("node", report=report)
         if moved.status is not ExecutionStatus.SUCCESS:
             said = describe_motion([node])
             return moved.status, f"could not finish {said}: {moved.message}"
-    return ExecutionStatus.SUCCESS, describe_motion(plan.nodes, done=True)
+    done = describe_motion(plan.nodes, done=True)
+    if shortfalls:
+        return ExecutionStatus.SUCCESS, f"{done} ({'; '.join(shortfalls)}: a wall or furniture was in the way)"
+    return ExecutionStatus.SUCCESS, done

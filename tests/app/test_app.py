@@ -114,6 +114,16 @@ def test_a_command_naming_no_room_but_a_bed_goes_to_the_bedroom(fetcher, apartme
     assert result.success and result.data["executor"]["target_furniture"]["id"] == "roundtable_2"
 
 
+def test_a_counted_move_into_a_wall_goes_as_far_as_it_can(fetcher, apartment):
+    """"turn around and go forward three meters" 2 m from the hallway's end wall had moved 0 m
+    ("the goal (8.00, 0.17) is outside the map")."""
+    result = fetcher.fetch("turn around and go forward three meters", apartment, "original", "oracle")
+    assert result.success, result.task.message
+    assert "(only 1." in result.task.message and "a wall or furniture was in the way" in result.task.message
+    x, y, _ = result.data["true_final_pose"]
+    assert 6.3 < x < 6.95  # the hallway's end wall is at x = 7.18
+
+
 def test_a_stopped_fetch_ends_stopped_at_once(fetcher, apartment):
     stop = threading.Event()
     stop.set()
