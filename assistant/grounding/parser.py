@@ -20,6 +20,7 @@ from assistant.grounding.said import said_reference_groundings
 from assistant.rdt import NO_TARGET
 from assistant.grounding.types import ChunkGrounding, ChunkRecord, GroundingPlan
 from assistant.language.retractions import without_retractions
+from assistant.language.shorthand import expand_shorthand
 
 
 #: longest command accepted, in words (a spoken fetch command has a few dozen)
@@ -103,7 +104,8 @@ class CommandParser:
         if len(text or "") > MAX_CHARS:
             raise AssistantError(f"the command has {len(text)} characters, more than {MAX_CHARS}; "
                                  "say it as several shorter commands")
-        analysis = self.language.analyse(without_retractions(text or ""))  # "the bedroom, no wait, the office"
+        # "go thru the livng rm": shorthand written out; "the bedroom, no wait, the office": the correction
+        analysis = self.language.analyse(without_retractions(expand_shorthand(text or "")))
         if len(analysis.tokens) > MAX_WORDS:
             raise AssistantError(f"the command has {len(analysis.tokens)} words, more than {MAX_WORDS}; "
                                  "say it as several shorter commands")

@@ -117,3 +117,12 @@ def test_a_command_of_moves_alone_is_a_motion_plan(parser, text, nodes):
     assert plan.node_strings == nodes and plan.room is None and plan.object is None
     assert plan.flags[0] == "motion" and plan.kind == "dynamic"
     assert all(n.distance_m is not None or n.degrees is not None for n in plan.nodes)
+
+
+@pytest.mark.parametrize("text, room", [
+    ("go thru the livng rm and the fork is on the table", "living room"),    # shorthand, as the chat reads it
+    ("go into the bedroom, no wait, the living room, the fork is on the table", "living room"),  # taken back
+    ("go to the living room no sorry i mean the bedroom, the mug is on the table", "bedroom"),
+])
+def test_shorthand_and_words_taken_back_are_read_as_meant(parser, text, room):
+    assert parser.parse(text).plan.room == room
