@@ -411,7 +411,11 @@ class DialogueManager:
 
     # ------------------------------------------------------------------ stop / wait
     def _resume(self, text: str, start: float) -> Turn:
-        """"carry on": start again the task a person stopped, from where the robot is now."""
+        """"carry on": start again the task a person stopped, from where the robot is now (a
+        task still stopping is waited for: "stop" and "carry on" typed at once)."""
+        job = self.worker.job
+        if job is not None and job.stop.is_set() and job.thread.is_alive():
+            self.worker.wait(10.0)
         if self.busy:
             doing = self.activity
             return self._turn(text, "resume", f"I'm still {doing[0] if doing else 'at it'}.", start=start)
