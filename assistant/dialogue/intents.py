@@ -201,6 +201,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"^(please )?((can|could|would|will) you )?(please )?(go (and )?)?(find|locate|search for|look for) "
                r"(my|our|the|his|her) [a-z]+( [a-z]+)?( for me)?( please)?$",
                r"\bhave you seen\b",
+               # the thing first, the question after: "the statue? any idea?", "my mug anywhere?"
+               r"^(?:(?:and|so|um|uh|oh) )*(?:my|the|our|his|her) [a-z]+(?: [a-z]+)? (?:any idea|any ideas|anywhere|"
+               r"seen (?:it|them)|you seen (?:it|them)|know where (?:it is|they are|its|theyre))(?: at all)?$",
                r"\bdid you see\b", r"\bdo you know where\b", r"\bcan you find where\b",
                # a loss told rather than asked: "I can't find my keys", "I've lost my wallet"
                r"\b(cant|can not|cannot|couldnt|could not) find (my|our|the|his|her)\b",
