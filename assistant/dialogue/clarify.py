@@ -236,6 +236,23 @@ def distinct_phrases(world, scene: str, items) -> list[str]:
     return out
 
 
+#: someone else's thing in a question, the apostrophe gone ("where is johns phone", "wheres
+#: grandmas glasses"): groups ``owner`` (with its "s") and ``thing``
+OWNED = (r"\b(?:where(?:s| is| are| r| was| were| did)?|seen|find|found|lost|misplaced|with) "
+         r"(?:my |our |the )?(?P<owner>(?!(?:is|was|has|does|its|this|his|hers|yours|ours|theirs|whats|thats)\b)"
+         r"[a-z]{2,}s) (?P<thing>(?!(?:is|are|in|on|at|by|the|my|a|an)\b)[a-z]+(?: [a-z]+)?)$")
+
+
+def owner_phrase(norm: str) -> str | None:
+    """Whose thing a question asks about, as the reply says it: "John's", "Grandma's", "his",
+    "her", "their"; None for the person's own ("my", or no owner said)."""
+    m = re.search(OWNED, norm)
+    if m is not None:
+        return m.group("owner")[:-1].capitalize() + "'s"
+    m = re.search(r"\b(his|her|their)\b (?=[a-z]+(?: [a-z]+)?$)", norm)
+    return m.group(1) if m else None
+
+
 def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str | None, str | None]:
     """(the known object the words name, or None; the unknown noun asked about, or None):
     what "where is my …" asks for. Any noun phrase can name a thing (issue 16)."""
@@ -247,11 +264,9 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
     if plan_object:
         return plan_object, None
     # someone else's thing, the apostrophe gone: "wheres grandmas glasses", "where is moms phone"
-    owner = re.search(r"\b(?:where(?:s| is| are| r| was| were| did)?|seen|find|found|lost|misplaced|with) "
-                      r"(?:my |our |the )?(?!(?:is|was|has|does|its|this|his|hers|yours|ours|theirs|whats|thats)\b)"
-                      r"[a-z]{2,}s ((?!(?:is|are|in|on|at|by|the|my|a|an)\b)[a-z]+(?: [a-z]+)?)$", norm)
+    owner = re.search(OWNED, norm)
     if owner is not None:
-        norm = f"the {owner.group(1)}"
+        norm = f"the {owner.group('thing')}"
     m = re.search(r"\b(?:my|the|your|our|his|her|their|a|an|some|any) ([a-z]+(?: [a-z]+)?)$", norm) or \
         re.search(r"\b(?:my|the|your|our|his|her|their|a|an|some|any) ([a-z]+)\b", norm)
     if m:

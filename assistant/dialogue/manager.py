@@ -26,7 +26,7 @@ import time
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
-                                        in_place_slot, options_named, unused_mentions, with_articles)
+                                        in_place_slot, options_named, owner_phrase, unused_mentions, with_articles)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
                                         LEADING_THANKS, drop_courtesies, expand_shorthand, ordinal_choice, teach_phrase,
                                         told_place, where_check_parts)
@@ -634,6 +634,17 @@ class DialogueManager:
                             lead=f"OK, I'll look for your {obj} again.")
 
     def _where(self, text: str, intent, start: float) -> Turn:
+        """"where is my mug?" (see :meth:`_where_of`); someone else's thing is said as theirs
+        ("where is John's phone?" → "I haven't seen John's cell phone …", not "your")."""
+        turn = self._where_of(text, intent, start)
+        owner = owner_phrase(intent.text)
+        obj = turn.data.get("object")
+        if owner and obj and turn.reply:
+            turn.reply = re.sub(rf"\b[Yy]our {re.escape(obj)}\b", f"{owner} {obj}", turn.reply)
+            self.last_said = turn.reply
+        return turn
+
+    def _where_of(self, text: str, intent, start: float) -> Turn:
         if intent.name == "where_dynamic" and (room := self._room_in(intent.text)) is not None:
             thing = self._object_in(intent.text)[0]
             if thing is None or set(thing.split()) <= self._room_words:  # "how do I get to the small room?"

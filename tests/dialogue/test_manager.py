@@ -200,6 +200,17 @@ def test_what_asks_for_no_thing_is_not_a_search_and_told_places_read_as_said(ser
         "OK — I'll remember that your mug is in the bedroom."  # was "on the bedroom this morning in the bedroom"
 
 
+def test_someone_elses_thing_is_said_as_theirs(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    m.services.search_mode = "oracle"
+    try:
+        assert m.handle("where is johns phone").reply.startswith("I haven't seen John's cell phone")  # was "your"
+        assert m.handle("wheres grandmas glasses").reply.startswith("I haven't seen Grandma's glasses")
+        assert m.handle("where is his hearing aid?").reply.startswith("I haven't seen his hearing aid")
+    finally:
+        m.services.search_mode = "sensed"
+
+
 def test_a_room_by_another_name_in_a_question(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
     reply = m.handle("what's in the lounge?").reply  # had listed both rooms
