@@ -63,6 +63,8 @@ def _show(world, scene: str, args: argparse.Namespace) -> int:
 
 
 def _print_summary(data: dict, title: str) -> None:
+    from assistant.generation import is_are
+
     start = data["start"]
     print(f"{data['world']} ({data['scene']} scene){' — ' + title if title else ''}")
     print(f"robot starts at x={start['x']:.2f} m, y={start['y']:.2f} m, heading {start['heading']:.2f} rad")
@@ -73,4 +75,4 @@ def _print_summary(data: dict, title: str) -> None:
         facing = "" if f["facing"] is None else f", facing {f['facing']:.2f} rad"
         print(f"  {f['id']:<16} {f['model']:<14} in the {f['room']:<13} at ({f['x']:.2f}, {f['y']:.2f}){facing}")
     for o in data["objects"]:
-        print(f"  the {o['name']} is on {o['on']} in the {o['room']} at ({o['x']:.2f}, {o['y']:.2f})")
+        print(f"  the {o['name']} {is_are(o['name'])} on {o['on']} in the {o['room']} at ({o['x']:.2f}, {o['y']:.2f})")

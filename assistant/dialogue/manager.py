@@ -1228,11 +1228,13 @@ class DialogueManager:
         if room is None or not items or (len(items) == 1 and not dropped):
             return None  # the only couch of the room: the words as said find it
         named = {str(getattr(m, "said", "")).lower() for m in mentions}
+        # the kind said with the word ("the round table": its model's own word, not "table")
+        named |= set(re.findall(r"[a-z]+", text.lower())) - {word, *FURNITURE_WORDS}
         models = [f for f in items if named & set(f.model.split())]  # "the desk": only the desks
         shown = word
         if 0 < len(models) < len(items):
             items = models
-            shown = next((w for w in models[0].model.split() if w in named), word)
+            shown = models[0].model if len({f.model for f in models}) == 1 else word  # "two round tables", "two desks"
         chosen = model_choice(mentions, items) if len(items) > 1 else (items[0] if dropped or models else None)
         if chosen is not None:
             phrase = furniture_phrase(self.services.describer, self.world, self.scene, chosen)

@@ -200,6 +200,15 @@ def test_what_asks_for_no_thing_is_not_a_search_and_told_places_read_as_said(ser
         "OK — I'll remember that your mug is in the bedroom."  # was "on the bedroom this morning in the bedroom"
 
 
+def test_the_kind_said_narrows_a_which_question(services, tmp_path):
+    """"the round table in the living room" of a room with two round tables among three: "There
+    are three tables …" had offered every table."""
+    m = DialogueManager("two-bedrooms-house", services=services.using(fetcher=StandInFetcher()),
+                        memory=ObjectMemory(tmp_path / "memory.json"))
+    reply = m.handle("go to the round table in the living room").reply
+    assert reply.startswith("There are two round tables in the living room — "), reply
+
+
 def test_someone_elses_thing_is_said_as_theirs(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
     m.services.search_mode = "oracle"
