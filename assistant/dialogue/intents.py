@@ -213,6 +213,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                # about the thing just talked of: "which room is it in?", "where exactly?", "which table exactly?"
                r"^(?:(?:and|so|ok|okay|but) )*which (room|table|one|place|chair|bit of the room) (is|are) (it|they|that|"
                r"those) (in|on|at)$",
+               r"^(?:(?:and|so|ok|okay|but|sorry) )*(?:which|what) (?:room|table|desk|place|bit of the room)(?: (?:is|was) "
+               r"(?:that|it)| are they| were they| exactly)?$",
                r"^(?:(?:and|so|ok|okay|but) )*(which|what) (room|table|place) (is|are) (my|the|our|his|her) [a-z]+"
                r"(?: [a-z]+)? (in|on|at)$",
                r"^(?:and|what about|how about|and what about) (my|the|our|his|her) [a-z]+(?: [a-z]+)?$",

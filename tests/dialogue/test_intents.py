@@ -269,6 +269,7 @@ def test_a_fifth_round_of_what_people_said(text, intent):
     ("I didn't catch that, repeat please", "repeat"), ("can you turn the lights off", "out_of_scope"),
     ("is that right?", "again"), ("how do you know?", "again"), ("I'm looking for my keys", "where"),
     ("the statue? any idea?", "where"), ("my mug anywhere?", "where"), ("the keys, seen them?", "where"),
+    ("which room is that", "where"), ("which desk?", "where"), ("what room was it", "where"),
 ])
 def test_what_people_say_that_asks_for_no_thing(said, intent):
     """These had been fetch commands: "Which room should I look for your today in …?"."""
