@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from assistant.app import known_object_names
 from assistant.dialogue.intents import ordinal_choice
-from assistant.grounding.objects import article, object_phrase, plural
+from assistant.grounding.objects import article, is_object_word, object_phrase, plural
 from assistant.grounding.vocabulary import furniture_category
 
 #: furniture words the robot can be told an unknown word stands for
@@ -247,7 +247,8 @@ def owner_phrase(norm: str) -> str | None:
     """Whose thing a question asks about, as the reply says it: "John's", "Grandma's", "his",
     "her", "their"; None for the person's own ("my", or no owner said)."""
     m = re.search(OWNED, norm)
-    if m is not None:
+    if m is not None and not is_object_word(m.group("owner")) and not is_object_word(
+            f"{m.group('owner')} {m.group('thing')}"):  # "my glasses case" is nobody's
         return m.group("owner")[:-1].capitalize() + "'s"
     m = re.search(r"\b(his|her|their)\b (?=[a-z]+(?: [a-z]+)?$)", norm)
     return m.group(1) if m else None

@@ -890,8 +890,13 @@ class DialogueManager:
             phrase = None  # only the room was said
         seen = self.memory.remember(self.world.name, obj, room, None, word, phrase, source=TOLD)
         where = " ".join(p for p in (phrase, f"in the {room}" if room else "") if p)
-        return self._turn(text, intent.name, f"OK — I'll remember that your {obj} {is_are(obj)} {where}.", "answer",
-                          "answered", start, object=obj, source="told", memory=seen.to_dict())
+        ask = ""
+        if room is None and phrase and len(homes) > 1:  # "on the round table": there is one in two rooms
+            self.pending = {"kind": "told_room", "object": obj, "word": word, "phrase": phrase, "rooms": homes}
+            ask = (f" Which room {'are they' if it_them(obj) == 'them' else 'is it'} in — "
+                   f"{_join(['the ' + r for r in homes], 'or')}?")
+        return self._turn(text, intent.name, f"OK — I'll remember that your {obj} {is_are(obj)} {where}.{ask}",
+                          "answer", "answered", start, object=obj, source=TOLD, memory=seen.to_dict())
 
     def _furniture_rooms(self, place: str) -> tuple[str | None, list[str]]:
         """The first furniture word of a place ("on the table next to the bed" → "table") and
@@ -1277,6 +1282,17 @@ class DialogueManager:
             if intent.name == "no":
                 return self._turn(text, "no", "OK.", "none", "answered", start)
             return None
+        if p["kind"] == "told_room":  # "OK — … on the round table. Which room is it in?": "the bedroom one"
+            self.pending = None
+            picked = ordinal_choice(norm)
+            room = self._room_in(norm) or (p["rooms"][picked] if picked is not None and picked < len(p["rooms"])
+                                           else None)
+            if room is None or room not in p["rooms"]:
+                return None  # not an answer: handled as itself
+            obj = p["object"]
+            seen = self.memory.remember(self.world.name, obj, room, None, p["word"], p["phrase"], source=TOLD)
+            return self._turn(text, "told", f"Got it — your {obj} {is_are(obj)} {p['phrase']} in the {room}.",
+                              "answer", "answered", start, object=obj, source=TOLD, memory=seen.to_dict())
         if p["kind"] == "word":
             word = p["word"]
             if len(norm.split()) > 4 and intent.name == "command":  # "go to the blue chair": a new request

@@ -200,6 +200,23 @@ def test_what_asks_for_no_thing_is_not_a_search_and_told_places_read_as_said(ser
         "OK — I'll remember that your mug is in the bedroom."  # was "on the bedroom this morning in the bedroom"
 
 
+def test_a_told_place_in_two_rooms_asks_which_and_keeps_the_answer(services, tmp_path):
+    """"I put my glasses case on the coffee table" (one in each room), then "the one in the
+    bedroom": that had become a trip to the bedroom, the note left without its room."""
+    m = make(services, tmp_path, StandInFetcher())
+    reply = m.handle("i put my glasses case on the coffee table").reply
+    assert reply.endswith("Which room is it in — the living room or the bedroom?"), reply
+    assert m.handle("the one in the bedroom").reply == "Got it — your glasses case is on the coffee table in the bedroom."
+    assert m.memory.recall("apartment", "glasses case").room == "bedroom"
+    assert m.handle("i left my keys on the coffee table").reply.endswith("Which room are they in — the living room or "
+                                                                         "the bedroom?")
+    m.handle("what's in the bedroom?")  # a new request: the question is dropped, the note kept without a room
+    assert m.pending is None and m.memory.recall("apartment", "keys").room is None
+    # "my glasses case" is nobody else's (it had been said as "Glasse's glasses case")
+    assert m.handle("where is my glasses case").reply.startswith(
+        "You told me just now that your glasses case is on the coffee table in the bedroom.")
+
+
 def test_the_kind_said_narrows_a_which_question(services, tmp_path):
     """"the round table in the living room" of a room with two round tables among three: "There
     are three tables …" had offered every table."""
