@@ -147,6 +147,11 @@ def _print(d: dict) -> None:
     if where is not None:  # (a command that names no object has none to see: "turn around")
         print(f"{d['object'] or 'object'} at {where}: {tv['pixels']} pixels in view"
               + (f" at {tv['distance']:.2f} m" if tv["distance"] is not None else ""))
+    replay = d.get("replay") or {}
+    if replay.get("first_difference_s") is not None:  # the replayed robot follows the recording, not this run
+        print(f"note: the recording's commands differ from this run's from {replay['first_difference_s']:.1f} s on "
+              f"({replay.get('matched', 0)} of {replay.get('issued', 0)} matched): a replay shows what was recorded, "
+              "so a different command cannot be carried out on it — give the recorded command")
     print(("SUCCESS" if d["success"] else f"FAILED: {d['failure']}")
           + f"   ({d['sim_seconds']:.1f} s simulated, {d['wall_seconds']:.1f} s wall-clock)")
 

@@ -14,7 +14,7 @@ from assistant.grounding.labels import records_from_tree
 from assistant.grounding.plan import assemble_plan, finish_flags, unused_words
 from assistant.grounding.destination import said_destination
 from assistant.grounding.motion import read_motion
-from assistant.grounding.rooms import (first_named_room, named_room_groundings, room_names_of,
+from assistant.grounding.rooms import (first_named_room, identified_room, named_room_groundings, room_names_of,
                                        side_room_groundings)
 from assistant.grounding.said import said_reference_groundings
 from assistant.rdt import NO_TARGET
@@ -122,6 +122,8 @@ class CommandParser:
             if said is not None and (last is None or last.target == NO_TARGET or (said.referenced and (
                     last.target != said.target or not last.referenced))):
                 plan.nodes, plan.support, plan.kind = [said], said.support, "static"
+        if (named := identified_room(analysis.text, self.world)) is not None:  # "…, that's the office, …"
+            plan.room = named
         plan.unused = unused_words(analysis.tree, getattr(self.grounder, "vocabulary_", frozenset()),
                                    analysis.unknown, corrections, plan)
         finish_flags(plan, words=len(analysis.tokens), world=self.world)

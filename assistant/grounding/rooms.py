@@ -17,6 +17,8 @@ a room on the way) are left alone.
 
 from __future__ import annotations
 
+import re
+
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
 
@@ -146,6 +148,18 @@ def named_room_groundings(records: Sequence[ChunkRecord], groundings: Sequence[C
         else:
             out.append(g)
     return out
+
+
+def identified_room(text: str, world) -> str | None:
+    """The room a route says it ends in by naming it ("… take the first door on your left,
+    that's the office, …", "the door on the right, which is the bedroom"), or None: the goal,
+    whatever rooms the way passed through before."""
+    rooms = room_names_of(world)
+    if not rooms:
+        return None
+    said = re.findall(r"\b(?:that'?s|that is|which is|this is|it'?s|its|thats) (?:the|your|my|our) ("
+                      + "|".join(re.escape(r) for r in rooms) + r")\b", (text or "").lower())
+    return said[-1] if said else None
 
 
 def first_named_room(records: Sequence[ChunkRecord], world) -> str | None:

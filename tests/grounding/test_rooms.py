@@ -124,3 +124,15 @@ def test_a_bed_says_its_room_when_no_room_is_named():
     assert furniture_room([RDTNode("bed", ())], apartment) == "bedroom"
     assert furniture_room([RDTNode("table", (("couch", "front"),))], apartment) is None
     assert furniture_room([RDTNode("bed", ())], studio) is None  # no bedroom in the studio flat
+
+
+def test_a_route_that_names_where_it_ends_goes_there():
+    from assistant.grounding.rooms import identified_room
+    from assistant.world import load_world
+
+    house = load_world("two-bedrooms-house")
+    said = "go through the living room to the inner hall, then the first door on your left, that's the office"
+    assert identified_room(said, house) == "office"  # had been the inner hall, the first room said
+    assert identified_room("the door on the right, which is the bedroom", house) == "bedroom"
+    assert identified_room("go to the inner hall and then the office", house) is None
+    assert identified_room("that's the kitchen", house) is None  # no kitchen in this house

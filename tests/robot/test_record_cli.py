@@ -110,6 +110,16 @@ def test_fetch_on_the_recorded_fetch_makes_the_recorded_commands(capsys):
     assert data["final_pose"] == [3.309, 5.774, 0.8294]
 
 
+def test_another_command_on_a_replay_says_the_recording_differs(capsys):
+    """It had said only "FAILED: collision" (the replayed robot drives as recorded)."""
+    from assistant.cli import main
+
+    main(["fetch", "go to the bedroom", "--robot", f"replay:{SAMPLES / 'apartment_fetch.mcap'}"])
+    out = capsys.readouterr().out
+    assert "note: the recording's commands differ from this run's from 0.0 s on" in out
+    assert "give the recorded command" in out
+
+
 @pytest.mark.slow
 def test_perceive_on_a_sample_scan_finds_the_dinner_table(capsys):
     """The real detector on the last frame of the recorded fetch: the robot faces the dinner table."""
