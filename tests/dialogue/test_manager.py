@@ -723,7 +723,8 @@ def test_a_thing_moved_and_rooms_of_other_homes(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
     m.handle("remember that my book is on the table in the bedroom")
     moved = m.handle("I moved it to the coffee table")
-    assert moved.reply == "OK — I'll remember that your book is on the coffee table."
+    assert moved.reply == ("OK — I'll remember that your book is on the coffee table. Which room is it in — the "
+                           "living room or the bedroom?")  # a coffee table in each
     assert m.handle("and my book?").reply.startswith("You told me just now that your book is on the coffee table")
 
 
