@@ -350,6 +350,12 @@ class DialogueManager:
             return other
         last = self._last_object() if re.search(r"\b(it|them|its|theyre)\b", intent.text) else None
         if last is not None and re.search(IT_REQUEST, intent.text):  # "bring it to me", "take me to it"
+            kept = self.memory.recall(self.world.name, last)
+            if kept is not None and kept.source == TOLD_NOT_SEEN and re.search(r"\b(find|search|look for)\b",
+                                                                                intent.text):
+                # looked where it was said to be and not seen: "find it" searches the home
+                return self._search(text, "command", last, "static", start,
+                                    lead=f"It wasn't where you said, so I'll look all over the home for your {last}.")
             return self._command(re.sub(r"\b(it|them)\b", f"the {last}", intent.text, count=1), start, original=text)
         if last is not None and (m := re.search(IT_IS_AT, intent.text)):  # "it's on the table by the chairs"
             return self._command(f"the {last} {is_are(last)} {m.group('place')}", start, original=text)

@@ -243,6 +243,16 @@ def test_a_room_by_another_name_in_a_question(services, tmp_path):
     assert reply.startswith("In the living room I know of") and "bedroom" not in reply
 
 
+def test_find_it_after_a_told_place_was_not_confirmed_searches_the_home(services, tmp_path):
+    """"find it" had gone back to the same table ("I can't see your wallet there" again)."""
+    m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
+    m.handle("my wallet is on the bed")
+    m.wait(10)
+    turn = m.handle("find it")
+    assert turn.action == "search" and turn.reply.startswith("It wasn't where you said, so I'll look all over")
+    m.close()
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
