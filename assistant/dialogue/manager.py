@@ -256,6 +256,14 @@ class DialogueManager:
             return self._turn(text, name, SOCIAL_REPLIES[name], "stop", "answered", start)
         if name == "stop":
             return self._do_stop(text, start)
+        if name == "cancel" and re.search(r"\bforget\b", intent.text) and self.history \
+                and self.history[-1].intent == "told" and self.history[-1].data.get("object"):
+            # "forget that" just after being told where a thing is: the note goes
+            obj = self.history[-1].data["object"]
+            self.pending = None
+            self.memory.forget(self.world.name, obj)
+            return self._turn(text, name, f"OK — I've forgotten what you told me about your {obj}.", "none",
+                              "cancelled", start, object=obj)
         if name == "cancel":
             was = self.pending is not None
             self.pending = None

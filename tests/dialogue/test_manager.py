@@ -253,6 +253,15 @@ def test_find_it_after_a_told_place_was_not_confirmed_searches_the_home(services
     m.close()
 
 
+def test_forget_that_after_a_told_place_forgets_it(services, tmp_path):
+    m = make(services, tmp_path, StandInFetcher())
+    m.handle("I put my hearing aids on the bed")
+    assert m.memory.recall("apartment", "hearing aids") is not None
+    assert m.handle("forget that").reply == "OK — I've forgotten what you told me about your hearing aids."
+    assert m.memory.recall("apartment", "hearing aids") is None  # it had said "OK, never mind" and kept it
+    assert m.handle("forget it").reply == "OK."  # nothing just told: as before
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
