@@ -146,7 +146,10 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     # things a robot without an arm cannot do to things ("put the mug by the sink", "open the door")
     ("no_arm", (r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:put|place|drop|set down|"
                 r"carry|throw|pour|wash|clean|tidy|cook|open|close|shut|lock|unlock|fold|water|feed|push|lift|pick up)"
-                r" (?!(?:me|us|to|up|on)\b)[a-z]",)),
+                r" (?!(?:me|us|to|up|on)\b)[a-z]",
+                # the thing said as "it": "can you pick it up", "could you carry them for me"
+                r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:pick (?:it|them|that|this) up|"
+                r"lift (?:it|them)|carry (?:it|them)|hold (?:it|them)|hand (?:it|them) (?:to me|over))\b")),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(call|phone|ring|text|email|message|video call) (my|the|someone|somebody|a|an|him|her|them)\b",
                       r"\b(make|cook|get|bring|fix) (me |us )?(a |some )?(cup of |mug of )?(tea|coffee|dinner|lunch|"

@@ -270,6 +270,7 @@ def test_a_fifth_round_of_what_people_said(text, intent):
     ("is that right?", "again"), ("how do you know?", "again"), ("I'm looking for my keys", "where"),
     ("the statue? any idea?", "where"), ("my mug anywhere?", "where"), ("the keys, seen them?", "where"),
     ("which room is that", "where"), ("which desk?", "where"), ("what room was it", "where"),
+    ("can you pick it up", "no_arm"), ("could you carry them for me", "no_arm"),
 ])
 def test_what_people_say_that_asks_for_no_thing(said, intent):
     """These had been fetch commands: "Which room should I look for your today in …?"."""
