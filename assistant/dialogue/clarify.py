@@ -264,6 +264,9 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
             return k, None
     if plan_object:
         return plan_object, None
+    # what a thing is for is not the thing: "the clicker for the telly", "the keys to the car"
+    norm = re.sub(r"^(.*\b(?:my|the|our|his|her|a|an) [a-z]+(?: [a-z]+)?) (?:for|to) (?:the|my|our|his|her) "
+                  r"[a-z]+(?: [a-z]+)?$", r"\1", norm)
     # someone else's thing, the apostrophe gone: "wheres grandmas glasses", "where is moms phone"
     owner = re.search(OWNED, norm)
     if owner is not None:
@@ -302,7 +305,7 @@ def known_spelling(noun: str, known) -> str | None:
         return None
     limit = 2 if len(noun) >= 8 else 1
     for name, _, _ in process.extract(noun, list(known), scorer=OSA.distance, score_cutoff=limit, limit=5):
-        if name[0] == noun[0] and not noun.startswith(name):
+        if name[0] == noun[0] and noun not in (name + "s", name + "es"):  # "wallett" is a wallet, "laptops" no
             return name
     return None
 
