@@ -315,6 +315,10 @@ COURTESIES = re.compile(r"[,;]?\s*\b(?:if (?:it is|its|it's|that is|thats|that's
                         r"(?:and )?(?:i|we) (?:would|'d|d) (?:be (?:very |so )?grateful|appreciate it))\b\s*[,;]?",
                         re.IGNORECASE)
 #: a first sentence of thanks or agreement before a request ("Thank you. Could you please …")
+#: a first clause that drops what went before, then a new request ("never mind, where's my knitting")
+LEADING_NEVER_MIND = re.compile(r"^\s*(?P<lead>(?:oh |ok |okay |no )?(?:never ?mind|forget (?:it|that)|cancel that|"
+                                r"scratch that|leave it|doesnt matter|it doesnt matter)(?: then| dear| robot)?)\s*[.!,;-]*\s+"
+                                r"(?P<rest>\S.*)$", re.IGNORECASE)
 LEADING_THANKS = re.compile(r"^\s*(?P<lead>(?:ok(?:ay)?,? )?(?:thank you(?: (?:so|very) much)?|thanks(?: a lot| so much)?|cheers|"
                             r"ta|lovely|great|perfect|good|ok|okay|alright)(?: robot| dear)?)\s*[.!,;]+\s+(?P<rest>\S.*)$",
                             re.IGNORECASE)

@@ -28,7 +28,7 @@ from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distin
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         in_place_slot, options_named, owner_phrase, unused_mentions, with_articles)
 from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
-                                        LEADING_THANKS, drop_courtesies, expand_shorthand, ordinal_choice, teach_phrase,
+                                        LEADING_NEVER_MIND, LEADING_THANKS, drop_courtesies, expand_shorthand, ordinal_choice, teach_phrase,
                                         told_place, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
@@ -240,6 +240,14 @@ class DialogueManager:
                 turn.reply = f"You're welcome. {turn.reply}"
                 self.last_said = turn.reply
             return turn
+        lead = LEADING_NEVER_MIND.match(text)
+        if lead is not None and classify(lead.group("rest")).name not in ("empty", "cancel", "thanks", "ack"):
+            # "never mind, where's my knitting": the question or task before is dropped, the new one taken
+            self.pending = None
+            if self.busy:
+                self.stop()
+                self.worker.wait(10.0)
+            return self._handle(lead.group("rest"), start)
         intent = classify(text)
         if intent.name == "command" and (place := self._bare_place(intent.text)) is not None:
             text = f"go to the {place}"  # "couch pls", "now the bed": a place said alone, as a request

@@ -262,6 +262,22 @@ def test_forget_that_after_a_told_place_forgets_it(services, tmp_path):
     assert m.handle("forget it").reply == "OK."  # nothing just told: as before
 
 
+def test_never_mind_then_a_new_request(services, tmp_path):
+    """"never mind, where's my knitting" had only stopped ("Stopping." / "OK, never mind.")."""
+    m = make(services, tmp_path, StandInFetcher(hold=True))
+    m.handle("go to the bedroom")
+    turn = m.handle("never mind, go to the living room")
+    assert turn.action == "fetch" and turn.reply == "Going to the living room."
+    m.close()
+    m = make(services, tmp_path, StandInFetcher())
+    m.services.search_mode = "oracle"
+    try:
+        m.handle("where are my glasses")
+        assert m.handle("never mind, where's my knitting").reply.startswith("I haven't seen your knitting")
+    finally:
+        m.services.search_mode = "sensed"
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
