@@ -249,6 +249,17 @@ class DialogueManager:
                 self.worker.wait(10.0)
             return self._handle(lead.group("rest"), start)
         intent = classify(text)
+        guess = re.fullmatch(r"(?:(?:maybe|perhaps|probably|possibly|try|or|i think|could it be|is it|its|might be) )*"
+                             r"(?P<place>(?:in|on|under|by|near|next to|beside|behind|on top of|in front of) "
+                             r"(?:(?:the|my|our) )?[a-z]+(?: [a-z]+)?)(?: maybe| perhaps| then)?", intent.text)
+        if intent.name == "command" and guess is not None and self.history \
+                and self.history[-1].intent in ("where", "where_check") and self._last_object() is not None:
+            # "where is my book?" … "maybe in bed?", "on the coffee table?": is it there (the offer is dropped)
+            self.pending = None
+            obj = self._last_object()
+            place = re.sub(r"^in bed$", "on the bed", guess["place"])  # "in bed": on it
+            place = re.sub(r"^((?:next to|on top of|in front of|[a-z]+) )(?!the |my |our )", r"\1the ", place)
+            return self._where_check(text, Intent("where_check", f"is the {obj} {place}"), start)
         if intent.name == "command" and (place := self._bare_place(intent.text)) is not None:
             text = f"go to the {place}"  # "couch pls", "now the bed": a place said alone, as a request
             intent = classify(text)
@@ -817,12 +828,12 @@ class DialogueManager:
                 return self._turn(text, intent.name, "Which of your things do you mean? Ask me, for example, \"is "
                                   "my mug in the bedroom?\"", "clarify", "asked", start)
             return self._where(text, Intent("where", f"where is the {noun}"), start)
-        check = f"find the {obj} {place}"
+        check = f"find the {obj} {place}" + (f" in the {room}" if room and room not in place else "")  # "in bed": the bedroom
         seen = self.memory.recall(self.world.name, obj)
         if seen is None and not is_object_word(obj):  # a thing the parser has no word for: search for it
             return self._where(text, Intent("where", f"where is the {obj}"), start)
         if seen is None and self.services.search_mode != "sensed":  # the simulator's map answers (oracle)
-            mapped = self._from_map(text, intent, obj, room, start)
+            mapped = self._from_map(text, intent, obj, room, start, place)
             if mapped is not None:
                 return mapped
         if seen is None:  # nothing remembered: go and look there
@@ -863,19 +874,24 @@ class DialogueManager:
         models = self._said_models(seen.phrase or "")
         return not models or bool(models & said)
 
-    def _from_map(self, text: str, intent, obj: str, room: str | None, start: float) -> Turn | None:
+    def _from_map(self, text: str, intent, obj: str, room: str | None, start: float,
+                  said_place: str = "") -> Turn | None:
         """A yes-or-no place question answered from the simulator's map of the home (the oracle
         search: nothing is remembered), as :meth:`_where` answers a where-question; None when
-        the map has no such thing or no room was asked about."""
+        the map has no such thing or neither a room nor a kind of furniture was asked about
+        ("is it on the coffee table?": the kind the map has it on is compared)."""
         from assistant.generation import oracle_sighting
 
+        scene = self.world.scene(self.scene)
+        models = self._said_models(said_place)
         sighting = oracle_sighting(self.world, self.scene, obj)
-        result = self._describe(obj, "static") if sighting is not None and room is not None else None
+        result = self._describe(obj, "static") if sighting is not None and (room is not None or models) else None
         if result is None or not result.found:
             return None
         place = re.sub(rf"^the {re.escape(obj)} (is|are) ", "", result.description.rstrip("."), flags=re.I)
         self.pending = {"kind": "confirm", "command": f"bring me the {obj} {place}", "object": obj}
-        agrees = sighting.room == room
+        on = {f.id: f for f in scene.furniture}.get(next((o.on for o in scene.objects if o.name == obj), None))
+        agrees = (room is None or sighting.room == room) and (not models or (on is not None and on.model in models))
         said = result.description[:1].lower() + result.description[1:]
         reply = (f"{'Yes' if agrees else 'No'} — {said} (That is from the simulator's map of the home: "
                  f"I haven't seen {it_them(obj)} myself yet.) Shall I go over to {it_them(obj)}?")

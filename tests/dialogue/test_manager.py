@@ -278,6 +278,19 @@ def test_never_mind_then_a_new_request(services, tmp_path):
         m.services.search_mode = "sensed"
 
 
+def test_a_place_guessed_after_a_where_question_is_checked(services, tmp_path):
+    """"where is my mug?" … "maybe on the coffee table?" had asked which room the coffee table
+    is in (a new command); from the map it had said "Yes" of any table."""
+    m = make(services, tmp_path, StandInFetcher())
+    m.services.search_mode = "oracle"
+    try:
+        m.handle("where is my mug?")
+        assert m.handle("maybe on the coffee table?").reply.startswith("No — the mug is in the bedroom")
+        assert m.handle("is it on the hexagon table").reply.startswith("Yes — the mug is in the bedroom")
+    finally:
+        m.services.search_mode = "sensed"
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
