@@ -63,11 +63,18 @@ def is_amount_word(word: str) -> bool:
 
 
 def split_units(words: Sequence[str]) -> list[str]:
-    """The words with a unit written on its number said apart: "1.5m" → "1.5", "m"."""
+    """The words with a unit written on its number said apart ("1.5m" → "1.5", "m") and a
+    number "and a half" made one ("two and a half" → "2.5": its "and" joins no clauses)."""
     out: list[str] = []
     for w in words:
         m = _NUMBER_WITH_UNIT.match(w.strip().lower())
         out.extend(m.groups() if m else [w])
+    i = 0
+    while i + 3 < len(out):
+        n = _number(out[i].lower())
+        if n is not None and [x.lower() for x in out[i + 1:i + 4]] == ["and", "a", "half"]:
+            out[i:i + 4] = [f"{n + 0.5:g}"]
+        i += 1
     return out
 
 
@@ -78,9 +85,12 @@ def said_amount(words: Sequence[str]) -> Amount:
     distance = degrees = None
     numbers: list[float] = []
     article = False  # the numbers so far are only "a"/"an"
+    previous = ""
     for w in lowered:
         n = _number(w)
-        if w in ("a", "an"):
+        if w in ("a", "an") and previous == "half":
+            pass  # "half a meter": the half stands
+        elif w in ("a", "an"):
             numbers, article = [1.0], True
         elif w in ("couple", "few", "half"):
             numbers, article = [float(NUMBER_WORDS[w])], False
@@ -98,4 +108,5 @@ def said_amount(words: Sequence[str]) -> Amount:
             numbers = []
         elif w not in AMOUNT_WORDS and w != "of":
             numbers, article = [], False
+        previous = w
     return Amount(distance, degrees)

@@ -88,3 +88,18 @@ def test_a_motion_plan_has_nothing_but_counted_moves():
     assert not is_motion_plan(GroundingPlan(nodes=[RDTNode("non", (("move", "front"),))]))  # no amount
     assert not is_motion_plan(GroundingPlan(nodes=[turn, RDTNode("table", (("couch", "front"),))]))
     assert not is_motion_plan(GroundingPlan())
+
+
+@pytest.mark.parametrize("words, metres", [
+    ("go half a meter forward", 0.5), ("two and a half meters ahead", 2.5), ("drive 1.5 m", 1.5),
+    ("move forward 50 cm", 0.5), ("walk 3 meters", 3.0), ("go 1.5m ahead", 1.5),
+    ("go straight down the hallway about 5 metres then stop", 5.0),
+])
+def test_distances_as_people_write_them(words, metres):
+    """"half a meter" had been 1 m, "2 m" an object called "m", "walk 3 meters" no move."""
+    (node,) = read_motion(words.split())
+    assert node.pairs == (("move", "front"),) and node.distance_m == pytest.approx(metres)
+
+
+def test_a_hallway_without_a_distance_is_left_to_the_grounders():
+    assert read_motion("go down the hall".split()) is None
