@@ -677,6 +677,24 @@ class DialogueManager:
             self.last_said = turn.reply
         return turn
 
+    def _door_asked(self, text: str, intent, start: float) -> Turn | None:
+        """"where is the front door?": the room a named door of this home opens from (the
+        floor plan's doors), with an offer to go there; None when no door of the home is named."""
+        doors = {d.name.lower(): d for d in self.world.floorplan.doors if " door" in d.name.lower()}
+        named = next((name for name in sorted(doors, key=len, reverse=True)
+                      if re.search(rf"\b{re.escape(name)}\b", intent.text)), None)
+        if named is None:
+            return None
+        rooms = [r for r in doors[named].connects if r in self.rooms]
+        if not rooms:
+            return None
+        outside = any(r not in self.rooms for r in doors[named].connects)
+        where = (f"in the {rooms[0]}, leading outside" if outside else
+                 f"between the {rooms[0]} and the {rooms[1]}" if len(rooms) > 1 else f"in the {rooms[0]}")
+        self.pending = {"kind": "confirm", "command": f"go to the {rooms[0]}", "object": None}
+        return self._turn(text, intent.name, f"The {named} is {where}. Shall I go there?", "answer", "answered",
+                          start, room=rooms[0])
+
     def _where_of(self, text: str, intent, start: float) -> Turn:
         if intent.name == "where_dynamic" and (room := self._room_in(intent.text)) is not None:
             thing = self._object_in(intent.text)[0]
@@ -699,6 +717,8 @@ class DialogueManager:
             self.last_said = turn.reply
             return turn
         obj, unknown = self._object_in(intent.text)
+        if obj is None and (door := self._door_asked(text, intent, start)) is not None:  # "where is the front door?"
+            return door
         if obj is None and unknown is None:
             obj = self._last_object()  # "where did you see it?", "how do I get there?", "where exactly?"
         if obj is None and unknown and (re.fullmatch(PLACE_QUESTION + re.escape(unknown), intent.text)

@@ -291,6 +291,14 @@ def test_a_place_guessed_after_a_where_question_is_checked(services, tmp_path):
         m.services.search_mode = "sensed"
 
 
+def test_where_a_door_of_the_home_is(services, tmp_path):
+    """"where is the front door" had been "I don't know what a front door is"."""
+    m = make(services, tmp_path, StandInFetcher())
+    assert m.handle("where is the bedroom door?").reply == \
+        "The bedroom door is between the hallway and the bedroom. Shall I go there?"
+    assert m.pending["command"] == "go to the hallway"
+
+
 def test_a_fetch_without_a_place_said_keeps_nothing_it_did_not_see(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
     m.handle("bring me my hearing aid")
