@@ -43,6 +43,10 @@ SECOND_LANGUAGE = ((r"\bnear of\b", "near"), (r"\bnext of\b", "next to"), (r"\bb
                    (r"\bin the front of\b", "in front of"))
 
 
+#: words people write apart that the vocabulary knows joined ("a six sided table")
+WRITTEN_APART = ((r"\bsix sided\b", "six-sided"), (r"\bsix side\b", "six-sided"))
+
+
 def expand_shorthand(text: str) -> str:
     """``text`` with chat shorthand written out ("pls check bedrm 4 my keys" → "please check
     bedroom for my keys"): the words of :data:`SHORTHAND`, "2"/"4" before a determiner or a
@@ -55,7 +59,7 @@ def expand_shorthand(text: str) -> str:
     out = re.sub(r"(?<![\w'’])[A-Za-z][A-Za-z0-9.]*(?![\w'’])", word, text or "")
     out = re.sub(r"(?<![\w.])2" + _NUMBER_WORD_NEXT, "to", out)
     out = re.sub(r"(?<![\w.])4" + _NUMBER_WORD_NEXT, "for", out)
-    for pattern, english in SECOND_LANGUAGE:  # "go near of the bed"
+    for pattern, english in (*SECOND_LANGUAGE, *WRITTEN_APART):  # "go near of the bed", "six sided"
         out = re.sub(pattern, english, out, flags=re.IGNORECASE)
     # "go to the couch and wait there": the robot waits where a task ends anyway
     return re.sub(r"(?<=\w)[ ,]+and (?:wait|stay)(?: (?:there|here))?(?: (?:for me|please))*\s*([.!?]*)\s*$", r"\1",

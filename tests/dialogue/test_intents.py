@@ -183,6 +183,8 @@ def test_more_of_what_people_say_in_other_homes(text, intent):
     ("go to the couch and wait there", "go to the couch"), ("go to the bed and stay there please.", "go to the bed."),
     ("robot go near of the bed", "robot go near the bed"), ("the cup on table next of sofa",
                                                             "the cup on table next to sofa"),
+    ("go thru the livng rm to the rnd table", "go through the living room to the round table"),
+    ("the six sided table", "the six-sided table"),
 ])
 def test_chat_shorthand_is_written_out(typed, meant):
     from assistant.dialogue.intents import expand_shorthand
