@@ -103,6 +103,7 @@ class FetchTask:
     max_looks_for_reference: int = 2
     max_other_surfaces: int = 3  # surfaces looked at when the object is not seen on the target
     spot_clearance_m: float = 0.4  # free space around the spot to look at an object seen from afar
+    by_target_m: float = 0.3  # a thing seen this near the target's cells is by it (metres)
 
     # ------------------------------------------------------------------ set-up
     def _setup(self, ctx: TaskContext) -> None:
@@ -299,6 +300,10 @@ class FetchTask:
         if (now is not before or before is not None and before.furniture_id == target.id) and (
                 now.furniture_id in (None, target.id) or not seen_on):
             return None  # seen from here on the target (or on nothing the robot has mapped)
+        if now is not before and self._by_target(now, target):
+            # seen from here by the target, though put on the furniture beside it (the monitor on
+            # the table by the bed, placed on the bed by the detector's cells): it is in view
+            return None
         pose = self.ctx.pose()
         others = [e for e in self.chooser.likely_surfaces(room, wanted, pose, self._said) if e.id != target.id]
         if (found := self._look_where_seen(name, room, target)) is not None:
@@ -312,6 +317,14 @@ class FetchTask:
                 return other
         self._face(target)
         return None
+
+    def _by_target(self, sighting, target: Entity) -> bool:
+        """Whether a sighting lies by ``target``: within :attr:`by_target_m` of its cells."""
+        cells = np.asarray(target.points_m(), dtype=float).reshape(-1, 2)
+        if not len(cells):
+            return False
+        gap = np.hypot(cells[:, 0] - sighting.x_m, cells[:, 1] - sighting.y_m).min()
+        return bool(gap <= self.by_target_m)
 
     def _look_where_seen(self, name: str, room: str, target: Entity) -> Entity | None:
         """When the object was seen in ``room`` (on the way, or in an earlier task) on no

@@ -328,3 +328,24 @@ def test_an_object_seen_from_afar_on_nothing_mapped_is_looked_at_where_it_was_se
     bearing = math.atan2(mug.y - pose.y, mug.x - pose.x) - pose.theta
     assert abs(math.atan2(math.sin(bearing), math.cos(bearing))) < HALF_FOV_RAD
     assert {s.name: s for s in result.seen}["mug"].distance_m < 2.5  # seen again, from near
+
+
+def test_a_thing_seen_by_the_target_ends_the_fetch_there():
+    """The monitor on the table beside the bed, put on the bed by the detector's cells, was seen
+    from the table's viewing pose; the fetch then turned to the bed and lost it from view
+    ("Go to the bedroom, the monitor is on the table to the left of the bed": 20 of 22 in the
+    apartment's original scene, `assistant eval fetch --perception sensed --world apartment`)."""
+    import numpy as np
+
+    from assistant.executor.fetch import FetchTask
+    from assistant.perception.objects import Sighting
+
+    class Table:  # a 0.5 m square table's cells (stand-in entity)
+        def points_m(self):
+            return np.array([[x, y] for x in (6.0, 6.25, 6.5) for y in (-2.25, -2.0, -1.75)])
+
+    task = FetchTask.__new__(FetchTask)
+    task.by_target_m = FetchTask.by_target_m
+    assert task._by_target(Sighting("monitor", 6.2, -2.0, 0.9, room="bedroom"), Table())
+    assert task._by_target(Sighting("monitor", 6.7, -2.0, 0.9, room="bedroom"), Table())  # 0.2 m off its edge
+    assert not task._by_target(Sighting("monitor", 7.5, -2.0, 0.9, room="bedroom"), Table())
