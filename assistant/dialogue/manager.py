@@ -882,10 +882,15 @@ class DialogueManager:
         return {f.model for f in self.world.scene(self.scene).furniture
                 if re.search(rf"\b{re.escape(f.model)}s?\b", place)}
 
+    def _support_models(self, place: str) -> set[str]:
+        """The furniture models a place says a thing lies on ("on the coffee table"); none for a
+        place told by furniture near it ("near the bed", "next to the couch")."""
+        return self._said_models(place) if re.match(r"(?:on|on top of|upon|at)\b", place) else set()
+
     def _same_model(self, place: str, seen) -> bool:
         """Whether a remembered place can be the kind of furniture a place names: "is it on the
         coffee table?" of a mug seen on a round table is a no (it had said "Yes — … on the table")."""
-        said = self._said_models(place)
+        said = self._support_models(place)
         if not said:
             return True
         items = {f.id: f for f in self.world.scene(self.scene).furniture}
@@ -903,7 +908,7 @@ class DialogueManager:
         from assistant.generation import oracle_sighting
 
         scene = self.world.scene(self.scene)
-        models = self._said_models(said_place)
+        models = self._support_models(said_place)
         sighting = oracle_sighting(self.world, self.scene, obj)
         result = self._describe(obj, "static") if sighting is not None and (room is not None or models) else None
         if result is None or not result.found:
