@@ -1,6 +1,7 @@
 """The manager with the real parser and describer; the simulator is replaced by a stand-in
 fetcher (the real one is exercised by `assistant eval dialogue` and the chat CLI test)."""
 
+import contextlib
 import math
 import sys
 import threading
@@ -40,6 +41,16 @@ def services():
     s = Services(perception="oracle")
     s.warm_up(load_world("apartment"), background=False)
     return s
+
+
+@contextlib.contextmanager
+def searching_the_map(m):
+    """The manager answers "where is my X?" from the simulator's map (oracle search) meanwhile."""
+    m.services.search_mode = "oracle"
+    try:
+        yield m
+    finally:
+        m.services.search_mode = "sensed"
 
 
 def make(services, tmp_path, fetcher, said=None):
@@ -118,17 +129,11 @@ def test_missing_room_is_asked(services, tmp_path):
 
 def test_where_without_memory_says_it_is_the_simulators_knowledge(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
-    m.services.search_mode = "oracle"
-    try:
+    with searching_the_map(m):
         turn = m.handle("where is my glasses case")
-    finally:
-        m.services.search_mode = "sensed"
     assert turn.data["source"] == "simulator" and "simulator" in turn.reply
-    m.services.search_mode = "oracle"
-    try:
+    with searching_the_map(m):
         dyn = m.handle("how do I get to my fork?")
-    finally:
-        m.services.search_mode = "sensed"
     assert dyn.data["style"] == "dynamic" and dyn.reply.lower().startswith("go into the living room")
 
 
@@ -166,16 +171,13 @@ def test_a_place_told_and_not_seen_there_is_kept_as_told(services, tmp_path):
 
 def test_a_doubt_is_answered_with_what_the_robot_goes_by(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
-    m.services.search_mode = "oracle"  # answered from the map, not searched for
-    try:
+    with searching_the_map(m):  # answered from the map, not searched for
         for doubt in ("is that right?", "you sure?", "how do you know?", "is it really there?"):
             m.handle("where is my hearing aid?")  # not on the map, nobody said: "I don't know where it is"
             reply = m.handle(doubt).reply
             assert reply == ("I haven't seen your hearing aid myself, and nobody has told me where it is. Shall I "
                              "look for it?"), doubt  # was taken as "yes" to the offer to look
             m.handle("no")
-    finally:
-        m.services.search_mode = "sensed"
 
 
 def test_a_place_of_another_kind_of_table_is_a_no(services, tmp_path):
@@ -228,13 +230,10 @@ def test_the_kind_said_narrows_a_which_question(services, tmp_path):
 
 def test_someone_elses_thing_is_said_as_theirs(services, tmp_path):
     m = make(services, tmp_path, StandInFetcher())
-    m.services.search_mode = "oracle"
-    try:
+    with searching_the_map(m):
         assert m.handle("where is johns phone").reply.startswith("I haven't seen John's cell phone")  # was "your"
         assert m.handle("wheres grandmas glasses").reply.startswith("I haven't seen Grandma's glasses")
         assert m.handle("where is his hearing aid?").reply.startswith("I haven't seen his hearing aid")
-    finally:
-        m.services.search_mode = "sensed"
 
 
 def test_a_room_by_another_name_in_a_question(services, tmp_path):
@@ -270,25 +269,19 @@ def test_never_mind_then_a_new_request(services, tmp_path):
     assert turn.action == "fetch" and turn.reply == "Going to the living room."
     m.close()
     m = make(services, tmp_path, StandInFetcher())
-    m.services.search_mode = "oracle"
-    try:
+    with searching_the_map(m):
         m.handle("where are my glasses")
         assert m.handle("never mind, where's my knitting").reply.startswith("I haven't seen your knitting")
-    finally:
-        m.services.search_mode = "sensed"
 
 
 def test_a_place_guessed_after_a_where_question_is_checked(services, tmp_path):
     """"where is my mug?" … "maybe on the coffee table?" had asked which room the coffee table
     is in (a new command); from the map it had said "Yes" of any table."""
     m = make(services, tmp_path, StandInFetcher())
-    m.services.search_mode = "oracle"
-    try:
+    with searching_the_map(m):
         m.handle("where is my mug?")
         assert m.handle("maybe on the coffee table?").reply.startswith("No — the mug is in the bedroom")
         assert m.handle("is it on the hexagon table").reply.startswith("Yes — the mug is in the bedroom")
-    finally:
-        m.services.search_mode = "sensed"
 
 
 def test_where_a_door_of_the_home_is(services, tmp_path):
