@@ -68,6 +68,9 @@ def without_retractions(text: str, leading: bool = True) -> str:
             continue
         end = _CLAUSE_END.search(after)
         said, rest = (after[:end.start()], after[end.start():]) if end else (after, "")
+        if said.strip().lower() in ("it", "that", "this", "them", "so", "well", "like"):
+            text = head + rest  # "go to the couch, I mean it": emphasis, nothing taken back
+            continue
         cut = [c.end() for c in _CLAUSE_END.finditer(head)]
         start = cut[-1] if cut else 0
         kept = head[:start]

@@ -36,3 +36,7 @@ def test_a_leading_marker_is_left_to_the_dialogue_when_asked():
     for said in ("no wait, the living room", "sorry, I meant the bedroom", "oh no wait, the couch"):
         assert without_retractions(said, leading=False) == said
     assert without_retractions("no wait, the living room") == "the living room"
+
+
+def test_i_mean_it_takes_nothing_back():
+    assert without_retractions("go to the couch, I mean it") == "go to the couch"
