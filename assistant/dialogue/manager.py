@@ -214,7 +214,13 @@ class DialogueManager:
         doing, or a command (one that changes the task, as telling where the thing searched for
         is, is taken at once; any other answers "I'm still busy") — rather than a question to
         answer once it has ended."""
-        return classify(expand_shorthand(drop_courtesies(text))).name in DURING_TASK
+        return classify(self._written_out(text)).name in DURING_TASK
+
+    def _written_out(self, text: str) -> str:
+        """An utterance as the manager reads it: words taken back, courtesies dropped, shorthand
+        written out, articles put before places ("pls go 2 bedrm" → "please go to the bedrm")."""
+        return with_articles(expand_shorthand(drop_courtesies(without_retractions(text, leading=False))),
+                             self._place_heads)
 
     def handle(self, text: str) -> Turn:
         """Route one utterance; never raises for what a person may say."""
@@ -230,8 +236,7 @@ class DialogueManager:
                               f"{error}). Please say it another way.", "none", "failed", start)
 
     def _handle(self, text: str, start: float) -> Turn:
-        text = with_articles(expand_shorthand(drop_courtesies(without_retractions(text, leading=False))),
-                             self._place_heads)  # "pls go 2 bedrm" → "please go to the bedrm"
+        text = self._written_out(text)
         lead = LEADING_THANKS.match(text)
         if lead is not None and classify(lead.group("rest")).name not in ("thanks", "ack", "praise", "empty"):
             # "Thank you. Could you please stop at the bedside table?": the request after the thanks

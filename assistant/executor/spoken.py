@@ -173,7 +173,6 @@ def run_moves(ctx, plan, reports: list[NodeReport]) -> tuple[ExecutionStatus, st
         else:
             pose = ctx.pose()
             goal = amount_goal(pose, rdt.direction, node.distance_m, node.degrees)
-            short_m = None
             if node.distance_m is not None:  # "go forward three meters" towards a wall 2 m away: as far as it can
                 goal, short_m = free_part(ctx.obstacles.occupancy(), pose, goal)
             report.move_to = [round(goal.x, 3), round(goal.y, 3), round(goal.theta, 4)]
@@ -181,7 +180,7 @@ def run_moves(ctx, plan, reports: list[NodeReport]) -> tuple[ExecutionStatus, st
             if short_m is not None and moved.status is ExecutionStatus.SUCCESS:
                 shortfalls.append(f"only {short_m:.1f} m of the {node.distance_m:.1f} m")
         report.status, report.message = moved.status.value, moved.message
-        if shortfalls and short_m is not None:
+        if short_m is not None and moved.status is ExecutionStatus.SUCCESS:  # this node's own shortfall
             report.message = f"{shortfalls[-1]}: a wall or furniture is in the way"
         ctx.event("node", report=report)
         if moved.status is not ExecutionStatus.SUCCESS:
