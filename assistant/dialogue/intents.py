@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass
 
 from assistant.language.shorthand import SECOND_LANGUAGE, SHORTHAND, expand_shorthand  # noqa: F401 (the chat reads them here)
+from assistant.dialogue.distances import HOW_FAR
 
 #: how a person may start by addressing the robot ("hey robot, …", "robot, …")
 ADDRESS = r"((hey|hi|hello|ok|okay)( there)?( robot)? |robot )?"
@@ -97,6 +98,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
+    # how far a place is from the robot, or which of two is nearer (dialogue.distances)
+    ("how_far", HOW_FAR),
     # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
     ("robot_place", (r"^(?:(?:uh|um|er|well|so|and|oh|ok|okay) )*" + ADDRESS + r"(?:so |and |please tell me |tell me )?(where are you|where you are|where are you at|"
                      r"(?:which|what) room (?:are you|you are|you|are you in|you are in|you in)(?: in)?|where have you got to|"
@@ -410,7 +413,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening", "feeling",
-                          "praise", "told", "on_furniture", "robot_place", "why_stopped", "what_see", "ack", "again"})
+                          "praise", "told", "on_furniture", "how_far", "robot_place", "why_stopped", "what_see", "ack", "again"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

@@ -23,6 +23,7 @@ import functools
 import math
 import re
 import time
+from dataclasses import dataclass
 
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
@@ -32,6 +33,7 @@ from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS
                                         told_place, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
+from assistant.dialogue.distances import floor_distance_m, how_far_question, spoken_distance
 from assistant.dialogue.memory import TOLD, TOLD_NOT_SEEN, ObjectMemory
 from assistant.language.retractions import without_retractions
 from assistant.app import known_object_names
@@ -89,6 +91,25 @@ def _in_sentence(reply: str) -> str:
     return reply if reply.startswith(("I ", "I'")) else reply[:1].lower() + reply[1:]
 
 
+@dataclass(frozen=True)
+class DistanceGoal:
+    """A place asked "how far" about: how to say it ("the couch", "your mug"), where it is
+    (``xy`` metres, world frame), its room, a note on where the place came from, the command
+    that goes there, and the thing's name when it is one of the person's things."""
+
+    name: str
+    xy: tuple[float, float]
+    room: str | None
+    note: str = ""
+    command: str | None = None
+    object: str | None = None
+
+
+def _capital(phrase: str) -> str:
+    """A phrase starting a sentence: its first letter capital ("the couch" → "The couch")."""
+    return phrase[:1].upper() + phrase[1:]
+
+
 def _seen_place(seen) -> str:
     """Where a remembered sighting was, said after the thing: " on the table by the chair in the bedroom"."""
     place = f" {seen.phrase}" if seen.phrase else (f" on the {seen.furniture_word}" if seen.furniture_word else "")
@@ -105,6 +126,7 @@ class DialogueManager:
     """
 
     _redirected = False  # the command being handled stopped a search for the thing it names
+    _last_distance_goal = None  # the place the last "how far" question was about (for "is it far?")
     #: the which-question last answered and the option taken ({... "options", "chosen": index}),
     #: for "no, the other one"; None once another request is made
     last_choice: dict | None = None
@@ -181,19 +203,21 @@ class DialogueManager:
         if self.on_pose is not None:
             self.on_pose(pose)
 
-    def robot_room(self) -> tuple[str | None, bool]:
-        """(the room the robot is in, whether it has moved this conversation): from the pose last
-        reported, else the last task's final pose, else the world's start pose."""
-        xy, moved = None, True
+    def robot_xy(self) -> tuple[tuple[float, float], bool]:
+        """((x, y) metres of the robot, whether it has moved this conversation): from the pose
+        last reported, else the last task's final pose, else the world's start pose."""
         if self.robot_pose is not None:
-            xy = (self.robot_pose.x, self.robot_pose.y)
-        else:
-            final = next((t.data["final_pose"] for t in reversed(self.history)
-                          if t.final and t.data.get("final_pose")), None)
-            xy = tuple(final[:2]) if final else None
-        if xy is None:
-            xy, moved = (self.world.start.x, self.world.start.y), False
-        room = self.world.floorplan.room_at(float(xy[0]), float(xy[1]))
+            return (float(self.robot_pose.x), float(self.robot_pose.y)), True
+        final = next((t.data["final_pose"] for t in reversed(self.history)
+                      if t.final and t.data.get("final_pose")), None)
+        if final:
+            return (float(final[0]), float(final[1])), True
+        return (float(self.world.start.x), float(self.world.start.y)), False
+
+    def robot_room(self) -> tuple[str | None, bool]:
+        """(the room the robot is in, whether it has moved this conversation); see :meth:`robot_xy`."""
+        xy, moved = self.robot_xy()
+        room = self.world.floorplan.room_at(*xy)
         return getattr(room, "name", room), moved
 
     def greeting(self) -> str:
@@ -368,6 +392,8 @@ class DialogueManager:
             return self._told(text, intent, start)
         if name == "on_furniture":
             return self._on_furniture(text, intent, start)
+        if name == "how_far":
+            return self._how_far(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -1091,20 +1117,146 @@ class DialogueManager:
             self.last_said = turn.reply
         return turn
 
+    # ------------------------------------------------------------------ how far
+    @functools.cached_property
+    def _walls_map(self):
+        """The occupancy the robot plans on with nothing perceived: the floor plan's walls and doors."""
+        from assistant.executor.planning import build_occupancy
+
+        return build_occupancy(self.world)
+
+    def _how_far(self, text: str, intent, start: float) -> Turn:
+        """"how far is the bedroom?", "is my mug far?", "which is closer, the couch or the bed?":
+        the length of the robot's route there over the floor plan (``dialogue.distances``)."""
+        asked = how_far_question(intent.text)
+        goals = []
+        for said in asked.places:
+            goal = self._distance_goal(said)
+            if isinstance(goal, str):  # what it cannot place, said back
+                return self._turn(text, intent.name, goal, "answer", "not_understood", start, unknown=said)
+            goals.append(goal)
+        here, _ = self.robot_xy()
+        metres = [floor_distance_m(self._walls_map, here, g.xy) for g in goals]
+        if len(goals) == 2:
+            (da, _), (db, _) = metres
+            a, b = goals
+            if abs(da - db) < 1.0:
+                reply = (f"They're about as far as each other: {a.name} {spoken_distance(da)} from me, "
+                         f"{b.name} {spoken_distance(db)}.")
+            else:
+                ranked = sorted(zip(goals, metres), key=lambda gm: gm[1][0], reverse=not asked.nearer)
+                (first, (d1, _)), (second, (d2, _)) = ranked
+                reply = (f"{_capital(first.name)} is {'closer' if asked.nearer else 'further'}: {spoken_distance(d1)} "
+                         f"from me, and {second.name} {spoken_distance(d2)}.")
+            return self._turn(text, intent.name, reply, start=start, distances_m=[round(d, 2) for d, _ in metres],
+                              places=[g.name for g in goals])
+        goal, (distance, by_floor) = goals[0], metres[0]
+        self._last_distance_goal = goal
+        here_room = self.robot_room()[0]
+        data = {"distance_m": round(distance, 2), "place": goal.name, "room": goal.room}
+        if goal.object:
+            data["object"] = goal.object
+        if goal.room is not None and goal.name == f"the {goal.room}" and here_room == goal.room:
+            return self._turn(text, intent.name, f"I'm in the {goal.room} now.", start=start, **data)
+        through = ""
+        if goal.room is not None and here_room is not None and goal.room != here_room:
+            path = self._room_path(here_room, goal.room)
+            if path and len(path) > 2:
+                through = f", through {_join([f'the {r}' for r in path[1:-1]])}"
+        how = "" if by_floor else " as the crow flies (I know no way there)"
+        where = ""
+        if goal.room is not None and goal.name != f"the {goal.room}":
+            where = f", here in the {goal.room}" if goal.room == here_room else f", in the {goal.room}"
+        verb = is_are(goal.object) if goal.object else "is"
+        reply = f"{_capital(goal.name)} {verb} {spoken_distance(distance)} from me{how}{where}{through}.{goal.note}"
+        if goal.command and distance >= 1.5:
+            self.pending = {"kind": "confirm", "command": goal.command, "object": goal.object}
+            reply += " Shall I go there?"
+        return self._turn(text, intent.name, reply, start=start, **data)
+
+    def _distance_goal(self, said: str) -> "DistanceGoal | str":
+        """Where a place asked "how far" about is — a room (its middle), a piece of furniture (the
+        nearest of its kind), one of the person's things where the robot last saw it or was told,
+        or "it" / "there" (the last place, thing or room talked about) — or a reply saying why it
+        cannot tell."""
+        words = re.sub(r"^(?:the|my|our|your|that|this) ", "", said.strip())
+        if words in ("it", "that", "there", "they", "them", "this", "that one", "this one", "that room"):
+            last = self.history[-1] if self.history else None
+            if last is not None and last.intent == "how_far" and self._last_distance_goal is not None:
+                return self._last_distance_goal  # "how far is the table?" … "is it far?"
+            thing = self._last_object()
+            if thing is not None:
+                return self._distance_goal(f"my {thing}")
+            room = next((t.data.get("room") for t in reversed(self.history) if t.data.get("room")), None)
+            if room is not None:
+                return self._distance_goal(f"the {room}")
+            return "How far is what? Ask me, for example, \"how far is the bedroom?\""
+        missing = unknown_room_named(words.split(), self.world)
+        if missing is not None:
+            return f"There is no {missing} here; the rooms are {_join(['the ' + r for r in self.rooms])}."
+        room = self._room_in(words)
+        if room is not None:  # "the table in the bedroom": the table, there
+            words = re.sub(r"\s*\b(?:in|inside|of) (?:the|my|our) [a-z ]+$", "", words) or words
+        furniture = self.world.scene(self.scene).furniture
+        found = matching(furniture, words) if words else []
+        if room is not None and not found:
+            centre = self.world.floorplan.room(room).centre
+            return DistanceGoal(f"the {room}", (float(centre[0]), float(centre[1])), room,
+                                command=f"go to the {room}")
+        if found:
+            if room is not None:
+                found = [f for f in found if f.room == room] or found
+            here, _ = self.robot_xy()
+            nearest = min(found, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
+            name = f"the {words if len(found) == 1 else nearest.model}"
+            there = f"in the {room}" if room is not None and all(f.room == room for f in found) else "here"
+            note = "" if len(found) == 1 else (f" (That's the nearest of the {NUMBER_WORDS.get(len(found), len(found))}"
+                                               f" {plural(nearest.word)} {there}.)")
+            return DistanceGoal(name, (nearest.x, nearest.y), nearest.room, note,
+                                command=f"go to the {nearest.model} in the {nearest.room}")
+        obj = self._object_in(said)[0]
+        if obj is None:
+            return (f"I don't know where {said} is. Ask me how far a room, a piece of furniture or one of your "
+                    "things is, for example \"how far is the bedroom?\"")
+        fetch = f"bring me the {obj}"
+        seen = self.memory.recall(self.world.name, obj)
+        if seen is not None and seen.x_m is not None:
+            return DistanceGoal(f"your {obj}", (seen.x_m, seen.y_m), seen.room, command=fetch, object=obj)
+        if seen is not None and seen.room is not None:
+            centre = self.world.floorplan.room(seen.room).centre
+            return DistanceGoal(f"your {obj}", (float(centre[0]), float(centre[1])), seen.room,
+                                f" (You told me it's there; I haven't seen {it_them(obj)} myself.)", fetch, obj)
+        if self.services.search_mode != "sensed":
+            from assistant.generation import oracle_sighting
+
+            sighting = oracle_sighting(self.world, self.scene, obj)
+            if sighting is not None:
+                return DistanceGoal(f"your {obj}", (sighting.x_m, sighting.y_m), sighting.room,
+                                    f" (That is from the simulator's map of the home: I haven't seen {it_them(obj)} "
+                                    "myself yet.)", fetch, obj)
+        return (f"I don't know where your {obj} {is_are(obj)} yet, so I can't say how far. Ask me \"where "
+                f"{is_are(obj)} my {obj}?\" and I'll look.")
+
+    def _room_path(self, here: str, room: str) -> list[str] | None:
+        """The rooms from ``here`` to ``room`` by the floor plan's doors and openings, or None."""
+        import networkx as nx
+
+        try:
+            return nx.shortest_path(self.world.floorplan.room_graph(), here, room)
+        except (nx.NetworkXNoPath, nx.NodeNotFound):
+            return None
+
     def _room_route(self, room: str) -> str | None:
         """The rooms to go through from the robot's room to ``room`` ("From the hallway, go through
         the living room into the office."), by the floor plan's doors and openings; None when the
         robot is in that room."""
-        import networkx as nx
-
         here = self.robot_room()[0]
         if here == room:
             return None
         if here is None:
             return f"The {room} is one of the rooms here."
-        try:
-            path = nx.shortest_path(self.world.floorplan.room_graph(), here, room)
-        except (nx.NetworkXNoPath, nx.NodeNotFound):
+        path = self._room_path(here, room)
+        if path is None:
             return f"I know no way from the {here} into the {room}."
         through = f" through {_join([f'the {r}' for r in path[1:-1]])}" if len(path) > 2 else ""
         return f"From the {here}, where I am, go{through} into the {room}."
