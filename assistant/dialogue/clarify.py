@@ -237,10 +237,11 @@ def distinct_phrases(world, scene: str, items) -> list[str]:
 
 
 #: someone else's thing in a question, the apostrophe gone ("where is johns phone", "wheres
-#: grandmas glasses"): groups ``owner`` (with its "s") and ``thing``
+#: grandmas glasses"): groups ``owner`` (with its "s") and ``thing``; an owner never ends in "ss"
+#: ("the cordless phone" is nobody's)
 OWNED = (r"\b(?:where(?:s| is| are| r| was| were| did)?|seen|find|found|lost|misplaced|with) "
          r"(?:my |our |the )?(?P<owner>(?!(?:is|was|has|does|its|this|his|hers|yours|ours|theirs|whats|thats)\b)"
-         r"[a-z]{2,}s) (?P<thing>(?!(?:is|are|in|on|at|by|the|my|a|an)\b)[a-z]+(?: [a-z]+)?)$")
+         r"[a-z]+[a-rt-z]s) (?P<thing>(?!(?:is|are|in|on|at|by|the|my|a|an)\b)[a-z]+(?: [a-z]+)?)$")
 
 
 def owner_phrase(norm: str) -> str | None:
@@ -265,8 +266,9 @@ def named_object(norm: str, world, plan_object: str | None = None) -> tuple[str 
     if plan_object:
         return plan_object, None
     # what a thing is for is not the thing: "the clicker for the telly", "the keys to the car"
-    norm = re.sub(r"^(.*\b(?:my|the|our|his|her|a|an) [a-z]+(?: [a-z]+)?) (?:for|to) (?:the|my|our|his|her) "
-                  r"[a-z]+(?: [a-z]+)?$", r"\1", norm)
+    # ("the table next to the bed" is a place: "next to" is no purpose)
+    norm = re.sub(r"^(.*\b(?:my|the|our|his|her|a|an) [a-z]+(?: (?!(?:next|close|closest|up|right|left|back)\b)[a-z]+)?)"
+                  r" (?:for|to) (?:the|my|our|his|her) [a-z]+(?: [a-z]+)?$", r"\1", norm)
     # someone else's thing, the apostrophe gone: "wheres grandmas glasses", "where is moms phone"
     owner = re.search(OWNED, norm)
     if owner is not None:

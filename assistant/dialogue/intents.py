@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from assistant.language.shorthand import SECOND_LANGUAGE, SHORTHAND, expand_shorthand  # noqa: F401 (the chat reads them here)
 from assistant.dialogue.distances import HOW_FAR
+from assistant.dialogue.nearby import NEAR_QUESTION, RELATION
 
 #: how a person may start by addressing the robot ("hey robot, …", "robot, …")
 ADDRESS = r"((hey|hi|hello|ok|okay)( there)?( robot)? |robot )?"
@@ -39,7 +40,40 @@ TOLD_PLACES = (
     r"at|near|beside|behind|inside|to|onto|into|back|down|away|up|there|here)\b)[a-z]+)?|it|them) "
     r"(?:back |down |away |up )?(?P<place>(?:" + _PLACE_WORDS + r"|to|onto|into) [a-z ]+?)(?: for you| now| again| today)?$",
 )
+_TELL_LEAD = (r"^(?:(?:ok|okay|so|and|robot|by the way|fyi|just so you know|just to let you know|actually|also|oh|"
+              r"well|um|uh|er|right) )*")
+_HEDGES = r"(?: i think| i believe| probably| somewhere| i guess| yeah| now| again| as usual| still)*"
+TOLD_PLACES += (
+    # a place said of one's own thing: "my glasses are by the bed", "my wallets in the office" (the
+    # apostrophe gone), "my purse is hanging on the bedroom door", "my keys should be on the desk"
+    _TELL_LEAD + r"(?P<thing>(?:my|our|his|her) [a-z]+(?: (?!(?:is|are|was|were|should|must|might|may|will|"
+    r"ought)\b)[a-z]+)?) (?:(?:is|are|was|were|should be|must be|might be|may be|will be|ought to be)(?: still| probably|"
+    r" somewhere| now| just| right| usually| hanging| sitting| lying| standing| up| down)* )?(?P<place>" + _PLACE_WORDS
+    + r" [a-z ]+?)" + _HEDGES + r"$",
+    # a hedged place of the thing: "the remote should be somewhere near the couch" (said plainly,
+    # "the mug is on the table by the chairs" is the dissertation's fetch description)
+    _TELL_LEAD + r"(?P<thing>the [a-z]+(?: (?!(?:is|are|should|must|might|may)\b)[a-z]+)?) (?:should be|must be|"
+    r"might be|may be|is probably|are probably|is somewhere|are somewhere|is usually|are usually)(?: somewhere)? "
+    r"(?P<place>" + _PLACE_WORDS + r" [a-z ]+?)" + _HEDGES + r"$",
+    # two places told at once: "the remotes on the couch and my book is on the bed" (``told_places``)
+    _TELL_LEAD + r"(?P<thing>(?:my|the|our|his|her) [a-z]+(?: [a-z]+)?) (?:(?:is|are) )?(?P<place>" + _PLACE_WORDS
+    + r" [a-z ]+? and (?:my|the|our|his|her) [a-z]+(?: [a-z]+)? (?:(?:is|are) )?" + _PLACE_WORDS + r" [a-z ]+)$",
+)
 _TOLD = tuple(re.compile(p) for p in TOLD_PLACES)
+#: a thing's place to be forgotten (group ``thing``)
+FORGET_THING = (r"^(?:(?:please|ok|okay|and|so|actually|can you|could you|will you) )*(?:forget|delete|drop|clear|erase) "
+                r"(?:what (?:i (?:told|said to) you|you know|you remember|youve got|you have) about |about |where |"
+                r"the note about |what you know about )?(?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!is\b|are\b|"
+                r"was\b|were\b)[a-z]+)?)(?: (?:is|are|was|were))?(?: please| now| for me| then)*$")
+#: a told place put right at once: "no, actually they're in the small room", "no wait, the living
+#: room", "sorry, on the dinner table" (group ``place``)
+TOLD_CORRECTION = re.compile(
+    r"^(?:(?:no|nope|sorry|actually|wait|oh|oops|i mean|my mistake|hang on|correction|no no|not there) )+"
+    r"(?:(?:its|theyre|it is|they are|thats|i put (?:it|them)|i left (?:it|them)|i meant) )?(?:(?:actually|really|"
+    r"now) )*(?P<place>" + _PLACE_WORDS + r" [a-z ]+|the [a-z ]+)$")
+#: one more thing's place after the first: "… and my phone on the bed"
+_ANOTHER_TOLD = re.compile(r"(?P<thing>(?:my|the|our|his|her) [a-z]+(?: (?!(?:is|are)\b)[a-z]+)?) (?:(?:is|are) )?"
+                           r"(?P<place>" + _PLACE_WORDS + r" [a-z ]+)")
 
 
 def told_place(norm: str) -> tuple[str, str] | None:
@@ -52,10 +86,40 @@ def told_place(norm: str) -> tuple[str, str] | None:
     return None
 
 
+def told_places(norm: str) -> list[tuple[str, str]]:
+    """Every (thing, place) told in one breath: "I put my keys on the coffee table and my phone on
+    the bed" → [("my keys", "on the coffee table"), ("my phone", "on the bed")]; a part after "and"
+    that is no thing's place stays with the place before it ("by the table and the chairs")."""
+    found = told_place(norm)
+    if found is None:
+        return []
+    thing, place = found
+    told = [[thing, ""]]
+    for part in re.split(r",? and (?=(?:my|the|our|his|her) [a-z]+)", place):
+        m = _ANOTHER_TOLD.fullmatch(part)
+        if m is not None and told[-1][1]:
+            told.append([m.group("thing"), m.group("place")])
+        else:
+            told[-1][1] = f"{told[-1][1]} and {part}" if told[-1][1] else part
+    return [(_tidy(t), re.sub(_HEDGES + "$", "", _tidy(p))) for t, p in told]
+
+
+def _tidy(words: str) -> str:
+    """Words as meant, without a speaker's hesitations and stutters: "my keys uh" → "my keys",
+    "on the the coffee table" → "on the coffee table"."""
+    out: list[str] = []
+    for w in words.split():
+        if w in ("uh", "um", "er", "erm", "hmm", "ah") or (out and out[-1] == w):
+            continue
+        out.append(w)
+    return " ".join(out)
+
+
 #: a question about what lies on a piece of furniture (groups ``furniture`` and ``room``)
 ON_FURNITURE = (r"^(?:(?:and|so|ok|okay|then|um) )*(?:what|whats|what else|what else is|anything|is there anything|"
                 r"is anything|are there any things|what things are|what have you seen|what did you see|have you seen anything)"
                 r"(?: else)?(?: is| are| lying| left)? (?:on|on top of) (?:the|my|that|this) (?P<furniture>[a-z]+(?: [a-z]+)?)"
+                r"(?: (?P<rel>" + RELATION + r") (?:the|my) (?P<landmark>[a-z]+(?: [a-z]+)?))?"
                 r"(?: (?:in|inside) the (?P<room>[a-z ]+))?(?: now| at the moment)?$")
 
 
@@ -71,6 +135,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
               r"(stop|halt|freeze|wait|hold on|hang on|stay)( (it|now|there|right now|please|moving|that|robot|"
               r"a (second|sec|moment|minute)|a sec|for a (second|moment|minute)))*$",
               r"^(stop|halt) (it|now|please)\b")),
+    # a told or seen place to be forgotten: "forget what I told you about my keys"
+    ("forget", (FORGET_THING,)),
     ("cancel", (r"^(?:(?:actually|ok|okay|oh|no|sorry|well|um|uh|so|ah) )*(please )?(cancel|never ?mind|forget (it|that|"
                 r"about it)|abort|no never ?mind)\b",
                 r"^(no )?(it doesnt|it does not) matter\b",
@@ -98,6 +164,8 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
+    # what stands by a piece of furniture: "what's next to the bed?" (dialogue.nearby)
+    ("near_furniture", (NEAR_QUESTION.pattern,)),
     # how far a place is from the robot, or which of two is nearer (dialogue.distances)
     ("how_far", HOW_FAR),
     # about the robot itself (before "where": "where are you" asks for the robot, not a thing)
@@ -173,11 +241,14 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"^(?:(?:but|and|so|hmm|oh) )*(?:are|is) (?:they|it) really there$",
                r"^(?:(?:but|and|so|hmm|oh) )*how (?:are you|can you be|do you know)(?: so)?(?: sure| that)?$")),
     ("seen_list", (r"^(?:(?:and|so|ok|okay|um|well|then|robot) )*(?:what|which things) (?:did|have) you (?:see|seen|find|found|"
-                   r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?$",
+                   r"spot|spotted|notice|noticed)(?: so far| today| on your way| there| lately)?"
+                   r"(?: (?:in|inside) (?:the|my|our) [a-z]+(?: [a-z]+)?)?(?: so far| today| there| lately)?$",
                    r"\bwhat do you remember\b", r"\bwhat (?:things )?have you seen\b",
                    r"\bwhere (?:have you seen|did you see) (?:things|everything|stuff)\b")),
     # a thing asked for with no place: "I need my glasses", "can I have my keys" (a fetch)
     ("want", (WANTED,)),
+    # before "told": "my keys are on the coffee table, right?" is a question
+    ("where_check", None),  # WHERE_CHECKS, below: "is my mug in the bedroom?"
     # where a thing is, told to be remembered: "remember that my keys are on the coffee table",
     # "I've put my glasses on the table by the bed"
     ("told", TOLD_PLACES),
@@ -189,7 +260,6 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                     r"place|hang|stick|stash) (?:my|the|our|his|her|this|that|these|those|it|them)\b",
                     r"\bwhere (?:does|do) (?:my|the|our|his|her|this|that|these|those) [a-z]+(?: [a-z]+)? (?:go|belong|live)"
                     r"(?: now)?$")),
-    ("where_check", None),  # WHERE_CHECKS, below: "is my mug in the bedroom?"
     ("where_dynamic", (r"\bhow (do|can|would|should) i (get|go|walk) to\b", r"^how (?:to|i|do you) (?:get|go|walk) to\b", r"\bhow (do|can|would|should) i (get|go) there\b", r"\bhow do i find\b",
                        r"\bwhich way (is|to)\b", r"\bhow (do|can) i reach\b")),
     ("where", (r"\bwhere (is|are|s|was|were|did|do|have)\b", r"\bwheres\b", r"\bwhered\b", r"\bwhereabouts\b",
@@ -199,7 +269,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                r"^(?:(?:im|i am|were|we are) )?(?:still )?(?:looking|searching) for (?:my|our|the|his|her) [a-z]+"
                r"(?: [a-z]+)?$",
                # where asked inside another sentence: "any idea where my keys are", "tell me where …"
-               r"^(.* )?(any idea|no idea|tell me|know|wonder|remember|show me|see) where\b",
+               r"^(.* )?(any idea|no idea|tell me|know|wonder|remember|remind me|show me|see) where\b",
                r"^where (on earth |in the world |the heck |the hell )?(are|is|my|the|our|his|her)\b",
                r"^(.* )?(im|i am|were|we are|been) (looking|searching) (everywhere )?for (my|our|the|his|her) "
                r"[a-z]+( [a-z]+)?( everywhere)?$",
@@ -413,7 +483,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening", "feeling",
-                          "praise", "told", "on_furniture", "how_far", "robot_place", "why_stopped", "what_see", "ack", "again"})
+                          "praise", "told", "forget", "on_furniture", "near_furniture", "how_far", "robot_place", "why_stopped", "what_see", "ack", "again"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

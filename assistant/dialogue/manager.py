@@ -28,13 +28,15 @@ from dataclasses import dataclass
 from assistant.dialogue.clarify import (FURNITURE_CHOICES, choose_option, distinct_phrases,
                                         fetch_command_text, furniture_mentions, model_choice, named_object,
                                         in_place_slot, options_named, owner_phrase, unused_mentions, with_articles)
-from assistant.dialogue.intents import (NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, VAGUE_PHRASES, WANTED, Intent, classify,
+from assistant.dialogue.intents import (FORGET_THING, NEW_REQUESTS, ON_FURNITURE, POLITE_WORDS, TOLD_CORRECTION,
+                                        VAGUE_PHRASES, WANTED, Intent, classify,
                                         LEADING_NEVER_MIND, LEADING_THANKS, drop_courtesies, expand_shorthand, ordinal_choice, teach_phrase,
-                                        told_place, where_check_parts)
+                                        told_place, told_places, where_check_parts)
 from assistant.grounding.destination import LOOKS
 from assistant.dialogue.inventory import ANYTHING, furniture_answer, furniture_asked, matching
 from assistant.dialogue.distances import floor_distance_m, how_far_question, spoken_distance
 from assistant.dialogue.memory import TOLD, TOLD_NOT_SEEN, ObjectMemory
+from assistant.dialogue.nearby import RELATION_SIDES, SIDE_WORDS, furniture_by, near_question
 from assistant.language.retractions import without_retractions
 from assistant.app import known_object_names
 from assistant.dialogue.services import Services, furniture_phrase
@@ -312,6 +314,8 @@ class DialogueManager:
             self.memory.forget(self.world.name, obj)
             return self._turn(text, name, f"OK — I've forgotten what you told me about your {obj}.", "none",
                               "cancelled", start, object=obj)
+        if name == "forget":
+            return self._forget(text, intent, start)
         if name == "cancel":
             was = self.pending is not None
             self.pending = None
@@ -345,6 +349,9 @@ class DialogueManager:
             turn = self._resolve(text, intent, start)
             if turn is not None:
                 return turn
+        if self.history and self.history[-1].intent == "told" and self.history[-1].data.get("object") and \
+                (fix := TOLD_CORRECTION.match(intent.text)) is not None:
+            return self._told_again(text, self.history[-1].data["object"], fix.group("place"), start)
         if name == "yes" and re.search(r"\b(there|to it|to them)\b", intent.text) and \
                 (last := self._last_object()) is not None:
             offer = self.last_offer if self.last_offer and self.last_offer.get("object") == last else None
@@ -380,7 +387,7 @@ class DialogueManager:
         if name == "furniture":
             return self._furniture(text, intent, start)
         if name == "seen_list":
-            return self._seen_list(text, start)
+            return self._seen_list(text, start, intent.text)
         if name == "want":  # "I need my glasses": a fetch of the thing, wherever it is
             thing = re.search(WANTED, intent.text).group("thing")
             return self._command(f"bring me {thing}", start, original=text)
@@ -394,6 +401,8 @@ class DialogueManager:
             return self._on_furniture(text, intent, start)
         if name == "how_far":
             return self._how_far(text, intent, start)
+        if name == "near_furniture":
+            return self._near_furniture(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -621,15 +630,25 @@ class DialogueManager:
         return {"id": item.id, "phrase": furniture_phrase(self.services.describer, self.world, self.scene, item),
                 "room": item.room, "model": item.model}
 
-    def _seen_list(self, text: str, start: float) -> Turn:
-        """"what did you see?": the things the robot remembers in this home, latest first."""
-        remembered = sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s)
+    def _seen_list(self, text: str, start: float, norm: str = "") -> Turn:
+        """"what did you see?", "what did you see in the bedroom?": the things the robot
+        remembers in this home (or that room), latest first."""
+        room = None
+        if (asked := re.search(r"\b(?:in|inside) (?:the|my|our) (?P<room>[a-z]+(?: [a-z]+)?)$", norm)) is not None:
+            room = self._room_in(asked.group(0))
+            missing = unknown_room_named(asked.group("room").split(), self.world) if room is None else None
+            if missing is not None:
+                return self._no_room(text, "seen_list", missing, start)
+        remembered = sorted((s for s in self.memory.sightings(self.world.name) if room is None or s.room == room),
+                            key=lambda s: -s.time_s)
         seen = [s for s in remembered if not s.told]
         told_things = [f"your {s.object}" for s in remembered if s.told]
         told = _join(told_things) if told_things else ""
         if not seen:
-            return self._turn(text, "seen_list", "I haven't seen any of your things here yet — ask me to look for "
-                              "something." + (f" You told me where to find {told}." if told else ""), start=start)
+            where = f"in the {room}" if room else "here"
+            return self._turn(text, "seen_list", f"I haven't seen any of your things {where} yet — ask me to look for "
+                              "something." + (f" You told me where to find {told}." if told else ""), start=start,
+                              room=room)
         parts, ages = [], []
         for s in seen[:SEEN_LIST_MAX]:
             parts.append(f"your {s.object}{_seen_place(s)}")
@@ -956,9 +975,56 @@ class DialogueManager:
 
     def _told(self, text: str, intent, start: float) -> Turn:
         """"remember that my keys are on the coffee table in the living room", "I've put my
-        glasses on the table by the bed": kept in the memory as told (no drive to check); the
-        room is the one named, or the only one with the furniture named."""
-        thing, place = told_place(intent.text)
+        glasses on the table by the bed", "my wallet's in the office and my phone is on the bed":
+        each thing kept in the memory as told (no drive to check); the room is the one named, or
+        the only one with the furniture named."""
+        told = []
+        for thing, place in told_places(intent.text):
+            kept = self._tell(thing, place)
+            if isinstance(kept, str):  # what it cannot keep, said back
+                return self._turn(text, intent.name, kept, "clarify" if kept.startswith("Which") else "answer",
+                                  "asked" if kept.startswith("Which") else "not_understood", start)
+            if isinstance(kept, Turn):
+                return kept
+            told.append(kept)
+        ask = next((k["ask"] if len(told) == 1 else k["ask_named"] for k in reversed(told) if k["ask"]), "")
+        said = _join([k["said"] for k in told])
+        data = {"object": told[-1]["object"], "source": TOLD, "memory": told[-1]["memory"]}
+        if len(told) > 1:
+            data["objects"] = [k["object"] for k in told]
+        return self._turn(text, intent.name, f"OK — I'll remember that {said}.{ask}", "answer", "answered", start,
+                          **data)
+
+    def _told_again(self, text: str, obj: str, place: str, start: float) -> Turn:
+        """A told place put right just after it was said: "no, actually they're in the small room"."""
+        if place.startswith("the "):  # "no wait, the living room": in a room, on a piece of furniture
+            place = f"in {place}" if self._room_in(place) is not None and not self._furniture_rooms(place)[0] \
+                else f"on {place}"
+        kept = self._tell(f"my {obj}", place)
+        if isinstance(kept, Turn):
+            return kept
+        if isinstance(kept, str):
+            return self._turn(text, "told", kept, "answer", "not_understood", start)
+        return self._turn(text, "told", f"Got it — {kept['said']}.{kept['ask']}", "answer", "answered", start,
+                          object=obj, source=TOLD, memory=kept["memory"])
+
+    def _forget(self, text: str, intent, start: float) -> Turn:
+        """"forget what I told you about my keys": the memory of that thing goes (told or seen)."""
+        thing = re.match(FORGET_THING, intent.text).group("thing")
+        obj = self._object_in(thing)[0]
+        if obj is None:
+            noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
+            return self._turn(text, intent.name, f"I have nothing noted about {article(noun)} {noun}.", start=start)
+        self.pending = None
+        if self.memory.recall(self.world.name, obj) is None:
+            return self._turn(text, intent.name, f"I have nothing noted about your {obj}.", start=start, object=obj)
+        self.memory.forget(self.world.name, obj)
+        return self._turn(text, intent.name, f"OK — I've forgotten where your {obj} {is_are(obj)}.", "none",
+                          "cancelled", start, object=obj)
+
+    def _tell(self, thing: str, place: str):
+        """Keep one told place: {"said", "object", "memory", "ask"} — or a reply (a string, or
+        the :class:`Turn` for a room this home lacks) when it cannot."""
         place = re.sub(WHEN_SAID, "", place).strip()  # "… to the bedroom this morning"
         place = re.sub(r"^into ", "in ", re.sub(r"^(to|onto) ", "on ", place))  # "I moved it to the coffee table"
         if (said_room := self._room_in(place)) is not None and re.fullmatch(
@@ -967,15 +1033,13 @@ class DialogueManager:
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
         obj = self._last_object() if noun in ("it", "them") else self._object_in(thing)[0]
         if obj is None and noun in ("it", "them"):
-            return self._turn(text, intent.name, "Which of your things do you mean? Say, for example, \"I've put my "
-                              "keys on the table in the hallway\".", "clarify", "asked", start)
+            return "Which of your things do you mean? Say, for example, \"I've put my keys on the table in the hallway\"."
         if obj is None:
-            return self._turn(text, intent.name, f"I don't know what {article(noun)} {noun} is, so I can't keep track of "
-                              "it.", "answer", "not_understood", start, unknown=noun)
+            return f"I don't know what {article(noun)} {noun} is, so I can't keep track of it."
         room = self._room_in(place)
         missing = unknown_room_named(place.split(), self.world) if room is None else None
         if missing is not None:
-            return self._no_room(text, intent.name, missing, start)
+            return self._no_room(place, "told", missing, time.perf_counter())
         word, homes = self._furniture_rooms(place)
         if room is None and len(homes) == 1:
             room = homes[0]
@@ -983,14 +1047,15 @@ class DialogueManager:
         if phrase in ("", "in the", "in") or re.fullmatch(r"(in|inside) (the|my|our) [a-z ]+", phrase):
             phrase = None  # only the room was said
         seen = self.memory.remember(self.world.name, obj, room, None, word, phrase, source=TOLD)
-        where = " ".join(p for p in (phrase, f"in the {room}" if room else "") if p)
+        named_room = room is not None and phrase is not None and re.search(rf"\b{re.escape(room)}\b", phrase)
+        where = " ".join(p for p in (phrase, f"in the {room}" if room and not named_room else "") if p)
         ask = ""
         if room is None and phrase and len(homes) > 1:  # "on the round table": there is one in two rooms
             self.pending = {"kind": "told_room", "object": obj, "word": word, "phrase": phrase, "rooms": homes}
             ask = (f" Which room {'are they' if it_them(obj) == 'them' else 'is it'} in — "
                    f"{_join(['the ' + r for r in homes], 'or')}?")
-        return self._turn(text, intent.name, f"OK — I'll remember that your {obj} {is_are(obj)} {where}.{ask}",
-                          "answer", "answered", start, object=obj, source=TOLD, memory=seen.to_dict())
+        return {"said": f"your {obj} {is_are(obj)} {where}", "object": obj, "memory": seen.to_dict(), "ask": ask,
+                "ask_named": ask and f" Which room {is_are(obj)} your {obj} in — {_join(['the ' + r for r in homes], 'or')}?"}
 
     def _furniture_rooms(self, place: str) -> tuple[str | None, list[str]]:
         """The first furniture word of a place ("on the table next to the bed" → "table") and
@@ -1019,10 +1084,19 @@ class DialogueManager:
                               "and beds.", "answer", "not_understood", start, unknown=said)
         entries = sorted((s for s in self.memory.sightings(self.world.name)
                           if s.furniture_word == word and (room is None or s.room == room)), key=lambda s: -s.time_s)
-        kind = {f.id for f in self.world.scene(self.scene).furniture if f.model == singular(said)}
-        if kind and kind != {f.id for f in self.world.scene(self.scene).furniture if f.word == word}:
-            entries = [s for s in entries if s.furniture in kind or (  # "the coffee table": not every table
-                s.furniture is None and singular(said) in (s.phrase or ""))]
+        furniture = self.world.scene(self.scene).furniture
+        pieces = [f for f in furniture if f.model == singular(said)] or [f for f in furniture if f.word == word]
+        landmark = m.group("landmark")
+        if landmark:  # "the table next to the bed": the tables standing there
+            side = RELATION_SIDES[m.group("rel")]
+            by = {g.id for ref in matching(furniture, landmark) if room is None or ref.room == room
+                  for g, _ in furniture_by(self.world, self.scene, ref.id, side)}
+            pieces = [f for f in pieces if f.id in by]
+            said = f"{said} {m.group('rel')} the {landmark}"
+        if landmark or len(pieces) < sum(f.word == word for f in furniture):  # not every table
+            entries = [s for s in entries if any(s.furniture == f.id or (  # the robot's own furniture: where it is
+                s.x_m is not None and s.room == f.room and math.dist((s.x_m, s.y_m), (f.x, f.y)) < 0.9)
+                for f in pieces) or (s.furniture is None and s.x_m is None and said in (s.phrase or ""))]
         where = f" in the {room}" if room else ""
         if not entries:
             return self._turn(text, intent.name, f"I don't know of anything on the {said}{where}: I only know what "
@@ -1031,6 +1105,46 @@ class DialogueManager:
                  f"{self.memory.age(s)})" for s in entries[:SEEN_LIST_MAX]]
         return self._turn(text, intent.name, f"On the {plural(word) if len(entries) > 1 else word}{where} I know of "
                           f"{_join(parts)}.", start=start, objects=[s.object for s in entries])
+
+    def _near_furniture(self, text: str, intent, start: float) -> Turn:
+        """"what's next to the bed?", "anything behind the couch?": the furniture standing there
+        (``dialogue.nearby``, from the home's map) and the things remembered on it."""
+        rel, said, named = near_question(intent.text)
+        room = self._room_in(f"the {named}") if named else None
+        if named and room is None:
+            return self._no_room(text, intent.name, named, start)
+        furniture = self.world.scene(self.scene).furniture
+        found = [f for f in matching(furniture, said) if room is None or f.room == room]
+        if not found:
+            return self._turn(text, intent.name, f"I don't know of {article(said)} {said} "
+                              f"{f'in the {room}' if room else 'here'}.", "answer", "not_understood", start,
+                              unknown=said)
+        if len(found) > 1:
+            rooms = _join(sorted({f"the {f.room}" for f in found}))
+            return self._turn(text, intent.name, f"There are {NUMBER_WORDS.get(len(found), len(found))} "
+                              f"{plural(found[0].word)} here, in {rooms} — which one? Say, for example, \"what's "
+                              f"{rel} the {found[0].model} in the {found[0].room}?\"", "clarify", "asked", start)
+        reference = found[0]
+        near = furniture_by(self.world, self.scene, reference.id, RELATION_SIDES[rel])
+        name = f"the {said}"
+        if not near:
+            return self._turn(text, intent.name, f"Nothing stands {rel} {name} in the {reference.room} that I know of.",
+                              start=start, room=reference.room)
+        pieces = [f"the {f.model}{'' if RELATION_SIDES[rel] else ' (' + SIDE_WORDS.get(side, 'there') + ')'}"
+                  for f, side in near]
+        reply = (f"{_capital(rel)} {name} in the {reference.room} {'is' if len(pieces) == 1 else 'are'} "
+                 f"{_join(pieces)}.")
+        things = []
+        for s in sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s):
+            on = next((f for f, _ in near if s.furniture == f.id or (
+                s.x_m is not None and s.room == f.room and math.dist((s.x_m, s.y_m), (f.x, f.y)) < 0.9)), None)
+            if on is not None:
+                how = "you told me" if s.told else "seen"
+                things.append(f"your {s.object} on the {on.model} ({how} {self.memory.age(s)})")
+        if things:
+            reply += f" On {'it' if len(near) == 1 else 'them'} I know of {_join(things[:SEEN_LIST_MAX])}."
+        return self._turn(text, intent.name, reply, start=start, room=reference.room,
+                          furniture=[f.id for f, _ in near])
 
     def _seen_at(self, obj: str, seen) -> str:
         """Where a remembered thing is, said with where the memory came from: "I saw your mug 3

@@ -13,6 +13,7 @@ from assistant.dialogue.memory import TOLD_NOT_SEEN
 from assistant.dialogue.services import furniture_phrase
 from assistant.dialogue.turns import Turn, join_words
 from assistant.grounding.vocabulary import furniture_category
+from assistant.grounding.objects import NOT_OBJECTS
 
 __all__ = ["ReplyContext", "SeenFurniture", "fetch_reply", "near", "place_text", "search_reply"]
 
@@ -137,7 +138,8 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
             ctx.memory.forget(ctx.world.name, obj)
             data["forgot"] = True
             here += " It isn't where I saw it last, so I've forgotten that place."
-        elif (before is None or before.told) and item is not None and names_furniture(said or text):
+        elif (before is None or before.told) and item is not None and names_furniture(said or text) \
+                and obj.split()[-1] not in NOT_OBJECTS:  # never a word of a place ("the table next to …")
             # "my hearing aid is on the bed": kept as the person said it, with the looking done,
             # so that "where is my hearing aid?" answers with it (a place told before and looked
             # at now too: it had answered "You told me … It's in this room")

@@ -156,7 +156,7 @@ def test_what_else_people_say_to_a_home_robot(text, intent):
      ("my keys", "on the coffee table in the living room")),
     ("remember my wallet is in the bedroom", ("my wallet", "in the bedroom")),
     ("I've put my glasses case on the table next to the bed", ("my glasses case", "on the table next to the bed")),
-    ("do you remember where my keys are", None), ("my glasses are on the table", None),
+    ("do you remember where my keys are", None), ("my glasses are on the table", ("my glasses", "on the table")), ("the glasses are on the table", None),
 ])
 def test_a_place_told_to_be_remembered(text, parts):
     found = classify(text)

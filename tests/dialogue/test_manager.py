@@ -148,11 +148,11 @@ def test_fetch_not_finding_object_forgets_it(services, tmp_path):
 
 
 def test_a_place_told_and_not_seen_there_is_kept_as_told(services, tmp_path):
-    """"my hearing aid is on the bed": the robot goes, does not see it; asked later, it says what
-    it was told and that it looked, and offers a search of the home (it had said "I haven't seen
-    your aid, and I don't know where it is")."""
+    """"the hearing aid is on the bed" (a fetch, as the study's descriptions): the robot goes, does
+    not see it; asked later, it says what it was told and that it looked, and offers a search of
+    the home (it had said "I haven't seen your aid, and I don't know where it is")."""
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
-    m.handle("my hearing aid is on the bed")
+    m.handle("the hearing aid is on the bed")
     assert "can't see your hearing aid" in m.wait(10).reply
     kept = m.memory.recall("apartment", "hearing aid")
     assert (kept.source, kept.room, kept.furniture) == ("told, not seen", "bedroom", "bed_1") and kept.told
@@ -245,7 +245,7 @@ def test_a_room_by_another_name_in_a_question(services, tmp_path):
 def test_find_it_after_a_told_place_was_not_confirmed_searches_the_home(services, tmp_path):
     """"find it" had gone back to the same table ("I can't see your wallet there" again)."""
     m = make(services, tmp_path, StandInFetcher(furniture="bed_1", seen=False))
-    m.handle("my wallet is on the bed")
+    m.handle("the wallet is on the bed")
     m.wait(10)
     turn = m.handle("find it")
     assert turn.action == "search" and turn.reply.startswith("It wasn't where you said, so I'll look all over")
@@ -529,9 +529,11 @@ def test_place_questions_answered_without_moving(services, tmp_path, said, reply
 def test_the_furniture_a_place_is_told_by_picks_the_room(services, tmp_path):
     # tables are in the living room and the bedroom; the bed only in the bedroom
     m = make(services, tmp_path, StandInFetcher())
-    turn = m.handle("my glasses are on the table next to the bed")
+    turn = m.handle("the glasses are on the table next to the bed")  # a fetch
     assert turn.action == "fetch" and turn.reply == "Going to the bedroom."
     m.wait(10)
+    told = m.handle("my glasses are on the table next to the bed")  # one's own thing's place: told
+    assert told.reply == "OK — I'll remember that your glasses are on the table next to the bed in the bedroom."
 
 
 def test_no_the_other_one_turns_to_another_of_the_options(services, tmp_path):
