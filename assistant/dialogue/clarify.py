@@ -299,12 +299,14 @@ def known_spelling(noun: str, known) -> str | None:
     """The known object name a typed noun misspells ("lapptop" → "laptop", "glases case" →
     "glasses case"), or None: the same first letter, one edit away (two from 8 letters on),
     5 letters or more (a shorter word one edit from a name is as often another word: "boot"),
-    and not the plural or another longer word of a known name ("laptops")."""
+    and not the plural or another longer word of a known name ("laptops"). A short word with a
+    letter typed twice is one too: "mugg" is the mug, "keyys" the keys."""
     from rapidfuzz import process
     from rapidfuzz.distance import OSA
 
     if len(noun) < 5:
-        return None
+        undoubled = [noun[:i] + noun[i + 1:] for i in range(1, len(noun)) if noun[i] == noun[i - 1]]
+        return next((name for name in known if name in undoubled), None)
     limit = 2 if len(noun) >= 8 else 1
     for name, _, _ in process.extract(noun, list(known), scorer=OSA.distance, score_cutoff=limit, limit=5):
         if name[0] == noun[0] and noun not in (name + "s", name + "es"):  # "wallett" is a wallet, "laptops" no

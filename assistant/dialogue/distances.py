@@ -38,11 +38,12 @@ NEARER = ("closer", "nearer", "nearest", "closest")
 
 @dataclass(frozen=True)
 class HowFarQuestion:
-    """What a distance question asks: the places (one, or two to compare) and whether the nearer
-    (``nearer`` True) or the further of two is wanted."""
+    """What a distance question asks: the places (one, or two to compare), whether the nearer
+    (``nearer`` True) or the further of two is wanted, and the place measured from."""
 
     places: tuple[str, ...]
     nearer: bool = True
+    origin: str | None = None  # "how far is the couch from the bed?": the bed (None: the robot)
 
 
 def how_far_question(norm: str) -> HowFarQuestion | None:
@@ -56,6 +57,9 @@ def how_far_question(norm: str) -> HowFarQuestion | None:
             first, _, second = what.partition(" or ")
             places = tuple(p.strip() for p in (first, second) if p.strip())
             return HowFarQuestion(places, m.group("compare") in NEARER) if len(places) == 2 else None
+        place, _, origin = what.partition(" from ")
+        if origin and place and not re.fullmatch(r"(?:here|me|you|us|where (?:you are|i am|we are))", origin):
+            return HowFarQuestion((place,), origin=origin)
         return HowFarQuestion((what,))
     return None
 

@@ -164,6 +164,14 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
     ("start_over", (r"^(lets )?(start over|start again|begin again|reset|restart|from the (top|beginning))\b",)),
     ("teach", (r"\b(let me|i will|ill|i want to|can i) (show|teach) you\b", r"\bwatch (me|how)\b",
                r"\blearn what\b")),
+    # which things the robot knows by sight: "what objects can you recognise?", "can you recognise my slippers?"
+    ("what_known", (r"\bwhat (?:things|objects|stuff|items|kind of things|sort of things)(?: else)? (?:can|do|could) you "
+                    r"(?:recogni[sz]e|see|find|look for|search for|detect|spot|identify|know)\b",
+                    r"\bwhat (?:can|do) you (?:recogni[sz]e|detect|identify)\b",
+                    r"\bwhat (?:can|could) you (?:look for|search for)\b",
+                    r"\b(?:can|could|do) you (?:recogni[sz]e|detect|identify|tell) (?:what )?(?P<thing>(?:a|an|my|the|our|his|"
+                    r"her|some) [a-z]+(?: [a-z]+)?)(?: look like| looks like)?$",
+                    r"\bdo you know what (?P<thing2>(?:a|an|my|the|our|his|her) [a-z]+(?: [a-z]+)?) (?:looks?|look) like\b")),
     # what stands by a piece of furniture: "what's next to the bed?" (dialogue.nearby)
     ("near_furniture", (NEAR_QUESTION.pattern,)),
     # how far a place is from the robot, or which of two is nearer (dialogue.distances)
@@ -483,7 +491,7 @@ NEW_REQUESTS = frozenset({"where", "where_dynamic", "teach", "greet", "help", "w
                           "status", "come_here", "smalltalk", "out_of_scope", "furniture", "rude",
                           "seen_list", "no_arm", "want", "dont", "put_advice",
                           "where_check", "resume", "emergency", "wellbeing", "listening", "feeling",
-                          "praise", "told", "forget", "on_furniture", "near_furniture", "how_far", "robot_place", "why_stopped", "what_see", "ack", "again"})
+                          "praise", "told", "forget", "what_known", "on_furniture", "near_furniture", "how_far", "robot_place", "why_stopped", "what_see", "ack", "again"})
 
 #: words of a request that are politeness, not content (never "unknown words")
 POLITE_WORDS = {"please", "robot", "could", "would", "can", "you", "kindly", "thanks", "thank", "hey", "now",

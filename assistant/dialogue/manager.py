@@ -403,6 +403,8 @@ class DialogueManager:
             return self._how_far(text, intent, start)
         if name == "near_furniture":
             return self._near_furniture(text, intent, start)
+        if name == "what_known":
+            return self._what_known(text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing
@@ -875,6 +877,9 @@ class DialogueManager:
         of furniture ("is the couch in the living room?") is answered from the home's map."""
         thing, place = where_check_parts(intent.text)
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
+        if re.search(r" or (?:in |on |at |by )?(?:the|my|our) ", place):  # "in the bedroom or the living room?"
+            return self._where(text, Intent("where", f"where is the {noun}" if noun not in ("it", "they", "them")
+                                            else f"where is the {self._last_object() or noun}"), start)
         obj = self._last_object() if noun in ("it", "they", "them") else self._object_in(thing)[0]
         room = self._room_in(place)
         word, homes = self._furniture_rooms(place)
@@ -946,6 +951,11 @@ class DialogueManager:
         items = {f.id: f for f in self.world.scene(self.scene).furniture}
         if seen.furniture in items:
             return items[seen.furniture].model in said
+        if seen.x_m is not None:  # the robot's own furniture (a detector's id): the piece the thing lay on
+            under = [f for f in items.values() if f.room == seen.room and f.word == seen.furniture_word
+                     and math.dist((f.x, f.y), (seen.x_m, seen.y_m)) < 0.9]
+            if under:
+                return min(under, key=lambda f: math.dist((f.x, f.y), (seen.x_m, seen.y_m))).model in said
         models = self._said_models(seen.phrase or "")
         return not models or bool(models & said)
 
@@ -1106,6 +1116,28 @@ class DialogueManager:
         return self._turn(text, intent.name, f"On the {plural(word) if len(entries) > 1 else word}{where} I know of "
                           f"{_join(parts)}.", start=start, objects=[s.object for s in entries])
 
+    def _what_known(self, text: str, intent, start: float) -> Turn:
+        """"what objects can you recognise?", "can you recognise my slippers?": the things this
+        home's map has, honestly — others can be looked for by name, but it may not know them."""
+        known = sorted(known_object_names(self.world))
+        listed = _join([plural(k) if k in ("keys", "glasses") else k for k in known])
+        m = re.search(r"(?:recogni[sz]e|detect|identify|tell|know what) (?:what )?(?:a |an |my |the |our |his |her |some )"
+                      r"(?P<thing>[a-z]+(?: [a-z]+)?)", intent.text)
+        if m is None:
+            return self._turn(text, intent.name, f"The things I know of in this home are: {listed}. I can look for "
+                              "anything else you name too, but I may not know it when I see it. Tell me where a thing "
+                              "is and I'll remember it.", start=start, objects=known)
+        said = re.sub(r" (?:look|looks) like$", "", m.group("thing"))
+        obj = self._object_in(f"my {said}")[0]
+        if obj in known:
+            return self._turn(text, intent.name, f"Yes — I know your {obj} when I see {it_them(obj)}. Ask me \"where "
+                              f"{is_are(obj)} my {obj}?\" and I'll look.", start=start, object=obj)
+        return self._turn(text, intent.name, f"I don't know of {'any' if said.endswith('s') else article(said)} "
+                          f"{said} in this home, so I may not know {'them' if said.endswith('s') else 'it'} when I see "
+                          f"{'them' if said.endswith('s') else 'it'}. I can still look if you like — or tell me where "
+                          f"{'they are' if said.endswith('s') else 'it is'} and I'll remember. The things I know of here "
+                          f"are: {listed}.", start=start, unknown=said)
+
     def _near_furniture(self, text: str, intent, start: float) -> Turn:
         """"what's next to the bed?", "anything behind the couch?": the furniture standing there
         (``dialogue.nearby``, from the home's map) and the things remembered on it."""
@@ -1250,6 +1282,15 @@ class DialogueManager:
                 return self._turn(text, intent.name, goal, "answer", "not_understood", start, unknown=said)
             goals.append(goal)
         here, _ = self.robot_xy()
+        if asked.origin is not None:  # "how far is the couch from the bed?"
+            origin = self._distance_goal(asked.origin)
+            if isinstance(origin, str):
+                return self._turn(text, intent.name, origin, "answer", "not_understood", start, unknown=asked.origin)
+            distance, _ = floor_distance_m(self._walls_map, origin.xy, goals[0].xy)
+            goal = goals[0]
+            verb = is_are(goal.object) if goal.object else "is"
+            return self._turn(text, intent.name, f"{_capital(goal.name)} {verb} {spoken_distance(distance)} from "
+                              f"{origin.name}.{goal.note}", start=start, distance_m=round(distance, 2), place=goal.name)
         metres = [floor_distance_m(self._walls_map, here, g.xy) for g in goals]
         if len(goals) == 2:
             (da, _), (db, _) = metres
@@ -1694,6 +1735,15 @@ class DialogueManager:
                 asked = f"Which of those — {_join(_pointed(word, options), 'or')}?"
                 self.pending = {**p, "options": options, "asked": asked}
                 return self._turn(text, "answer", asked, "clarify", "asked", start, options=options)
+            manner = self._choose_by_manner(norm, p["options"])
+            if manner == "none":  # "neither": nothing goes
+                self.pending = None
+                return self._turn(text, "no", "OK, I won't go to any of them. Tell me another place if you like.",
+                                  "none", "cancelled", start)
+            if manner is not None:
+                index, lead = manner
+                self.pending = None
+                return self._fetch_option(text, p, index, start, lead=lead)
             pointing = norm.startswith(("the one", "that one", "this one", "one ", "the other"))
             if (intent.name == "command" and not pointing and (len(norm.split()) > 5 or self._is_request(text))) \
                     or p.get("asked_again"):
@@ -1778,6 +1828,12 @@ class DialogueManager:
         obj = self._last_object()
         if room is None and m.group("room") in ("other room", "other one room", "other place") and obj is not None:
             return self._the_other_room(text, obj, start)
+        other = re.fullmatch(r"other (?P<kind>[a-z]+(?: [a-z]+)?)", m.group("room"))
+        if other is not None and (only := self._room_in(other.group("kind"))) is not None:
+            # "no, the other bedroom" in a home with one bedroom
+            rooms = _join(["the " + r for r in self.rooms])
+            return self._turn(text, "command", f"There's only one {only} here — the rooms are {rooms}. Which one "
+                              "did you mean?", "clarify", "asked", start)
         missing = unknown_room_named(m.group("room").split(), self.world) if room is None else None
         if missing is not None:
             return self._no_room(text, "command", missing, start)
@@ -1848,6 +1904,46 @@ class DialogueManager:
         or a move of its own ("bring me the mug", "go to the kitchen")."""
         plan = self.services.parser(self.world).parse(text).plan
         return bool(plan.object or plan.nodes or plan.room or unknown_room_named(text.lower().split(), self.world))
+
+    def _choose_by_manner(self, norm: str, options: list[dict]):
+        """An answer to a which-question that picks by how, not by what: "either" / "I don't
+        know" / "the nearest" (the nearest along the floor), "the bigger one" (by the model's
+        footprint), "the left one" (by its bearing from the robot) — (index, what to say first)
+        — or "none" for "neither", or None when the answer is none of these."""
+        words = re.sub(r"^(?:(?:um|uh|er|well|oh|hmm|ok|okay|so) )+", "", norm)
+        words = re.sub(r"(?: (?:please|then|is fine|will do|thanks|i guess))+$", "", words)
+        if re.fullmatch(r"(?:neither|none|no one|not any)(?: of them| one| of those)?", words):
+            return "none"
+        items = {f.id: f for f in self.world.scene(self.scene).furniture}
+        pieces = [items.get(o.get("id")) for o in options]
+        if any(f is None for f in pieces):
+            return None
+        here, _ = self.robot_xy()
+        if re.fullmatch(r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|"
+                        r"any one|anyone|any of them|whichever|whichever one|you choose|you pick|your choice|you decide|"
+                        r"(?:it )?doesnt matter|both|try both|all of them|(?:the )?(?:nearest|closest|near)(?: one)?)"
+                        r"(?: (?:one|of them|is fine))?", words):
+            metres = [floor_distance_m(self._walls_map, here, (f.x, f.y))[0] for f in pieces]
+            k = min(range(len(pieces)), key=metres.__getitem__)
+            return k, "I'll try the nearest."
+        size = re.fullmatch(r"(?:the )?(?P<size>big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|"
+                            r"tiny|long|longer|longest)(?: one| table| ones?)?", words)
+        if size is not None:
+            area = [f.spec.length_m * f.spec.width_m for f in pieces]
+            pick = max(area) if size["size"] in ("big", "bigger", "biggest", "large", "larger", "largest", "long",
+                                                 "longer", "longest") else min(area)
+            if area.count(pick) == 1:
+                return area.index(pick), ""
+            return None
+        side = re.fullmatch(r"(?:the )?(?:(?P<a>left|right)(?: hand)?(?: one| side| table)?|one (?:on|to) the "
+                            r"(?P<b>left|right))|the one (?:on|to) the (?P<c>left|right)(?: side)?", words)
+        if side is not None:
+            mid = (sum(f.x for f in pieces) / len(pieces), sum(f.y for f in pieces) / len(pieces))
+            heading = math.atan2(mid[1] - here[1], mid[0] - here[0])  # facing the pieces asked about
+            bearing = [math.remainder(math.atan2(f.y - here[1], f.x - here[0]) - heading, math.tau) for f in pieces]
+            pick = max(bearing) if (side["a"] or side["b"] or side["c"]) == "left" else min(bearing)
+            return bearing.index(pick), f"The one on the {side['a'] or side['b'] or side['c']} as I face them."
+        return None
 
     def _choose(self, norm: str, text: str, p: dict) -> int | None:
         return choose_option(norm, p["options"], lambda: self.services.parser(self.world).parse(text).plan)

@@ -9,7 +9,8 @@ __all__ = ["HELP_TEXT", "NUMBER_WORDS", "SOCIAL_REPLIES", "Turn", "join_words"]
 NUMBER_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
 HELP_TEXT = ("You can send me to your things (\"bring me the mug from the table in front of the couch "
              "in the living room\" — I go and find it; I have no arm to carry it), ask where something is (\"where is my mug?\", \"have you seen my "
-             "laptop?\"), how to get to it (\"how do I get to my fork?\"), or teach me a place "
+             "laptop?\"), how to get to it (\"how do I get to my fork?\"), how far it is (\"how far is the bedroom?\"), "
+             "tell me where a thing is (\"my glasses are by the bed\"), or teach me a place "
              "(\"let me show you what 'in front of the couch' means\"). Say \"stop\" to stop me, "
              "\"repeat that\", \"which home am I in\", \"start over\" or \"bye\".")
 #: intent → the reply to it (what people say to a robot besides requests)

@@ -30,7 +30,7 @@ __all__ = ["ObjectPhrase", "object_kind", "object_phrase", "object_phrases", "sa
 
 #: nouns that say a place, a part, a count, a motion or nothing in particular — never an object
 NOT_OBJECTS = frozenset({
-    "object", "objects", "thing", "things", "item", "items", "something", "stuff", "one", "ones", "next",
+    "object", "objects", "thing", "things", "item", "items", "something", "stuff", "one", "ones", "next", "other",
     "front", "top", "side", "sides", "middle", "center", "centre", "corner", "corners", "end", "ends",
     "edge", "back", "left", "right", "way", "bit", "part", "spot", "place", "area", "location",
     "direction", "position", "time", "turn", "step", "steps", "pace", "paces", "foot", "feet",

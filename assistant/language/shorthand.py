@@ -28,6 +28,7 @@ SHORTHAND = {
     "waht": "what", "waht's": "what's", "cna": "can", "yuo": "you", "fnd": "find", "fidn": "find", "adn": "and",
     "taht": "that", "thier": "their", "pleae": "please", "plase": "please", "pleas": "please",
     "wich": "which", "whcih": "which", "blu": "blue", "gren": "green", "whit": "white",
+    "hav": "have", "hve": "have", "ahve": "have", "sen": "seen", "yu": "you", "yor": "your",
     # places typed short ("the rnd table in the innr hall", "thru the livng rm")
     "rnd": "round", "innr": "inner", "livng": "living", "lvng": "living", "bdrm": "bedroom", "offce": "office",
     "thats": "that's",

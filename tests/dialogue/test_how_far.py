@@ -132,3 +132,13 @@ def test_a_thing_where_the_robot_saw_it_and_one_it_does_not_know_the_place_of(ma
 
 def test_a_room_the_home_does_not_have(manager):
     assert manager.handle("how far is the kitchen").reply.startswith("There is no kitchen here")
+
+
+def test_how_far_one_place_is_from_another(manager):
+    assert how_far_question("how far is the couch from the bed").origin == "the bed"
+    assert how_far_question("how far is the couch from here").origin is None
+    furniture = {f.model: f for f in manager.world.scene("original").furniture}
+    couch, bed = furniture["couch"], furniture["bed"]
+    metres, _ = floor_distance_m(manager._walls_map, (bed.x, bed.y), (couch.x, couch.y))
+    turn = manager.handle("how far is the couch from the bed?")
+    assert turn.reply == f"The couch is {spoken_distance(metres)} from the bed." and manager.pending is None

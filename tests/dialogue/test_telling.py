@@ -150,3 +150,67 @@ def test_a_cordless_phone_is_nobodys(services, tmp_path):
 
     assert owner_phrase("wheres the cordless phone") is None
     assert owner_phrase("where is johns phone") == "John's"
+
+
+@pytest.mark.parametrize("answer, chosen", [("the left one", "roundtable_3"), ("the one on the right", "coffeetable_2"),
+                                            ("either", "roundtable_3"), ("I don't know", "roundtable_3"),
+                                            ("the bigger one", "coffeetable_2")])
+def test_a_which_question_answered_by_how_not_what(services, tmp_path, answer, chosen):
+    # the one-bedroom house's bedroom: the round table by the bed (nearer the door, on the left as
+    # the robot faces the two from the hallway) and the coffee table by the chair (the larger)
+    m = make(services, tmp_path, "one-bedroom-house")
+    assert m.handle("go to the table in the bedroom").action == "clarify"
+    turn = m.handle(answer)
+    m.wait(10)
+    assert turn.action == "fetch" and turn.data["chosen"] == chosen and m.fetcher.texts[-1].endswith("in the bedroom")
+
+
+def test_neither_lets_the_question_go(services, tmp_path):
+    m = make(services, tmp_path, "one-bedroom-house")
+    m.handle("go to the table in the bedroom")
+    turn = m.handle("neither")
+    assert turn.outcome == "cancelled" and m.pending is None and m.fetcher.texts == []
+
+
+def test_typed_in_a_hurry(services, tmp_path):
+    from assistant.dialogue.clarify import known_spelling
+
+    assert known_spelling("mugg", ["mug", "keys"]) == "mug" and known_spelling("keyys", ["mug", "keys"]) == "keys"
+    assert known_spelling("mog", ["mug"]) is None  # short words one letter off are other words
+    m = make(services, tmp_path)
+    assert "glasses" in m.handle("hav you seen my glases").reply
+
+
+def test_one_place_or_another_is_answered_with_where_it_is(services, tmp_path):
+    m = make(services, tmp_path)
+    m.memory.remember("apartment", "mug", "bedroom", "hexagontable_1", "table", "on the table by the chair")
+    turn = m.handle("is my mug in the living room or the bedroom?")
+    assert turn.intent == "where" and "in the bedroom" in turn.reply and not turn.reply.startswith(("Yes", "No"))
+
+
+def test_the_table_a_thing_lay_on_is_known_by_where_it_was_seen(services, tmp_path):
+    m = make(services, tmp_path)
+    statue = next(o for o in m.world.scene("original").objects if o.name == "statue")
+    table = m.world.scene("original").item(statue.on)
+    m.memory.remember("apartment", "statue", table.room, "furniture:2", "table", "on the table to the right of the bed",
+                      x_m=statue.x, y_m=statue.y)
+    assert m.handle(f"is the statue on the {table.model}?").reply.startswith("Yes")
+    other = next(f.model for f in m.world.scene("original").furniture if f.word == "table" and f.model != table.model)
+    assert m.handle(f"is the statue on the {other}?").reply.startswith("Not when I last looked")
+
+
+def test_the_other_room_of_a_kind_the_home_has_one_of(services, tmp_path):
+    m = make(services, tmp_path)
+    m.handle("go to the bedroom")
+    m.wait(10)
+    turn = m.handle("no, the other bedroom")
+    assert turn.reply.startswith("There's only one bedroom here") and len(m.fetcher.texts) == 1
+
+
+def test_what_the_robot_knows_by_sight(services, tmp_path):
+    m = make(services, tmp_path)
+    listed = m.handle("what objects can you recognise?")
+    assert listed.intent == "what_known" and "glasses case" in listed.reply and "mug" in listed.reply
+    assert m.handle("can you recognise my slippers?").reply.startswith("I don't know of any slippers in this home")
+    assert m.handle("can you recognize a mug").reply.startswith("Yes")
+    assert m.fetcher.texts == []
