@@ -119,7 +119,7 @@ def _tidy(words: str) -> str:
 ON_FURNITURE = (r"^(?:(?:and|so|ok|okay|then|um) )*(?:what|whats|what else|what else is|anything|is there anything|"
                 r"is anything|are there any things|what things are|what have you seen|what did you see|have you seen anything)"
                 r"(?: else)?(?: is| are| lying| left)? (?:on|on top of) (?:the|my|that|this) (?P<furniture>[a-z]+(?: [a-z]+)?)"
-                r"(?: (?P<rel>" + RELATION + r") (?:the|my) (?P<landmark>[a-z]+(?: [a-z]+)?))?"
+                r"(?: (?P<rel>" + RELATION + r") (?:the|my) (?P<landmark>[a-z]+(?: (?!now\b|at\b)[a-z]+)?))?"
                 r"(?: (?:in|inside) the (?P<room>[a-z ]+))?(?: now| at the moment)?$")
 
 

@@ -28,7 +28,7 @@ SIDE_WORDS = {"front": "in front of it", "back": "behind it", "left": "to its le
 NEAR_QUESTION = re.compile(
     r"^(?:(?:and|so|ok|okay|um|uh|then|now|tell me|robot|hey robot|please) )*(?:what|whats|what is|what else is|whats else is|"
     r"what stands|what furniture is|is there anything|is there something|anything|is anything)(?: right| just| else)?"
-    r" (?P<rel>" + RELATION + r") (?:the|my|that|this) (?P<reference>[a-z]+(?: [a-z]+)?)"
+    r" (?P<rel>" + RELATION + r") (?:the|my|that|this) (?P<reference>[a-z]+(?: (?!now\b|at\b|in\b)[a-z]+)?)"
     r"(?: (?:in|inside) (?:the|my|our) (?P<room>[a-z]+(?: [a-z]+)?))?(?: now| at the moment)?$")
 
 
