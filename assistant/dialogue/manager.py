@@ -920,6 +920,14 @@ class DialogueManager:
             return turn
         agrees = (room is None or seen.room == room) and (word is None or seen.furniture_word == word) \
             and self._same_model(place, seen)
+        if re.match(r"(?:by|near|next to|beside|close to|around) ", place) and word is not None \
+                and seen.x_m is not None and (room is None or seen.room == room):
+            # "is the fork by the couch?" of a fork seen on the table behind the couch: by it, yes;
+            # "… next to the dinner table?" of the same fork: no, whatever it lay on
+            landmark = re.sub(r"^(?:by|near|next to|beside|close to|around) (?:the |my |our )?", "", place)
+            landmark = re.sub(r" (?:in|inside) (?:the|my|our) [a-z ]+$", "", landmark)
+            agrees = any(math.dist((f.x, f.y), (seen.x_m, seen.y_m)) < 1.2 + max(f.spec.length_m, f.spec.width_m) / 2
+                         for f in (matching(furniture, landmark) or matching(furniture, word)) if f.room == seen.room)
         at = self._seen_at(obj, seen)
         if agrees:
             self.pending = {"kind": "confirm", "command": fetch_command_text(obj, seen.phrase, seen.room),
@@ -1662,6 +1670,12 @@ class DialogueManager:
             picked = ordinal_choice(norm)
             room = self._room_in(norm) or (p["rooms"][picked] if picked is not None and picked < len(p["rooms"])
                                            else None)
+            if room is None and re.fullmatch(r"(?:(?:um|uh|well|oh|hmm) )*(?:(?:i )?(?:dont|do not) know|dunno|not sure|"
+                                             r"no idea|either|either one|any|either of them|i forget|i cant remember|"
+                                             r"(?:i )?(?:dont|do not) remember)(?: sorry| really)*", norm):
+                obj = p["object"]  # kept without a room: "on the round table" it stays
+                return self._turn(text, "told", f"That's fine — I'll just remember that your {obj} {is_are(obj)} "
+                                  f"{p['phrase']}.", "answer", "answered", start, object=obj, source=TOLD)
             if room is None or room not in p["rooms"]:
                 return None  # not an answer: handled as itself
             obj = p["object"]

@@ -214,3 +214,22 @@ def test_what_the_robot_knows_by_sight(services, tmp_path):
     assert m.handle("can you recognise my slippers?").reply.startswith("I don't know of any slippers in this home")
     assert m.handle("can you recognize a mug").reply.startswith("Yes")
     assert m.fetcher.texts == []
+
+
+def test_by_a_piece_of_furniture_is_judged_by_where_the_thing_was_seen(services, tmp_path):
+    m = make(services, tmp_path)
+    # the apartment's fork, seen on the round table just behind the couch (the detector's own id)
+    m.memory.remember("apartment", "fork", "living room", "furniture:7", "table",
+                      "on the table behind the couch against the right wall", x_m=3.92, y_m=1.95)
+    assert m.handle("is the fork by the couch").reply.startswith("Yes")
+    assert m.handle("is the fork next to the dinner table").reply.startswith("Not when I last looked")
+    assert m.handle("is the fork by the bed").reply.startswith("Not when I last looked")
+
+
+def test_a_told_room_not_known_keeps_the_place_without_it(services, tmp_path):
+    m = make(services, tmp_path)
+    asked = m.handle("I put my book on the coffee table")
+    assert asked.reply.endswith("Which room is it in — the living room or the bedroom?")
+    turn = m.handle("I don't know")
+    assert turn.reply == "That's fine — I'll just remember that your book is on the coffee table." and m.pending is None
+    assert m.memory.recall("apartment", "book").phrase == "on the coffee table"
