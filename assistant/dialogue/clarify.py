@@ -250,7 +250,11 @@ def owner_phrase(norm: str) -> str | None:
     m = re.search(OWNED, norm)
     if m is not None and not is_object_word(m.group("owner")) and not is_object_word(
             f"{m.group('owner')} {m.group('thing')}"):  # "my glasses case" is nobody's
-        return m.group("owner")[:-1].capitalize() + "'s"
+        from assistant.world.catalogue import load_catalogue
+
+        said = f"{m.group('owner')} {m.group('thing')}"
+        if known_spelling(said, sorted(load_catalogue().object_words())) is None:  # "my glases case" neither
+            return m.group("owner")[:-1].capitalize() + "'s"
     m = re.search(r"\b(his|her|their)\b (?=[a-z]+(?: [a-z]+)?$)", norm)
     return m.group(1) if m else None
 

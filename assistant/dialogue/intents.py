@@ -231,8 +231,9 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"lift (?:it|them)|carry (?:it|them)|hold (?:it|them)|hand (?:it|them) (?:to me|over))\b")),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
                       r"\b(call|phone|ring|text|email|message|video call) (my|the|someone|somebody|a|an|him|her|them)\b",
-                      r"\b(make|cook|get|bring|fix) (me |us )?(a |some )?(cup of |mug of )?(tea|coffee|dinner|lunch|"
-                      r"breakfast|food|a sandwich|something to eat|a drink)\b",
+                      r"\b(make|cook|get|bring|fix|fetch|grab|pour) (me |us )?(a |some )?(cup of |mug of |glass of )?(tea|"
+                      r"coffee|dinner|lunch|breakfast|food|a sandwich|something to eat|something to drink|a drink|water|"
+                      r"milk|juice|wine|beer)\b",
                       r"\b(tell me a joke|play (some )?music|turn (on|off) the (light|lights|tv|radio|heating))\b",
                       r"\bturn (?:the |my )?(?:light|lights|lamp|tv|telly|television|radio|heating|music|kettle|oven)"
                       r" (?:on|off|up|down)\b",

@@ -81,6 +81,9 @@ WHEN_SAID = (r"\s+(?:this (?:morning|afternoon|evening)|last night|tonight|yeste
              r"minutes ago|before (?:lunch|dinner|breakfast|bed))$")
 #: intents about the task under way, not to wait for its end (``about_the_task``)
 DURING_TASK = frozenset({"stop", "cancel", "emergency", "status", "start_over", "command"})
+#: a place said and then the right one: "not the bedroom, the living room", "no, not the couch but the bed"
+NOT_BUT = re.compile(r"^(?:(?:no|nope|sorry|oh)[ ,]+)*not (?:to )?(?:the |my |that )?[a-z]+(?: [a-z]+)?[ ,]+"
+                     r"(?:but |i mean |i meant |rather )?(?P<right>(?:the|my|to|into|go|in|on)\b.*)$")
 
 
 def _pointed(word: str, options: list[dict]) -> list[str]:
@@ -384,6 +387,12 @@ class DialogueManager:
             return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
                               if doing is None else f"I'm {doing[0]} ({doing[1]:.0f} s so far). Say \"stop\" to "
                               "stop me.", start=start)
+        if re.fullmatch(r"(?:(?:and|so|ok|okay|now) )*(?:is there anything|is anything|anything|whats|what is|what else is|"
+                        r"what have you seen|what can you see|do you see anything) on (?:it|there|that|top)(?: now)?",
+                        intent.text) and (item := self._last_furniture()[1]) is not None:
+            # "check the table by the bed" … "is there anything on it?": that piece
+            return self._on_furniture(text, Intent("on_furniture", f"whats on the {item.model} in the {item.room}"),
+                                      start)
         if name == "furniture":
             return self._furniture(text, intent, start)
         if name == "seen_list":
@@ -1466,6 +1475,12 @@ class DialogueManager:
     def _command_turn(self, text: str, start: float, force: bool, original: str | None) -> Turn:
         said = original or text
         text = self._substitute(text)
+        if (rather := NOT_BUT.match(text)) is not None:  # "not the bedroom, the living room": the second
+            text = rather.group("right")
+        if re.search(r"\b(?:of|to|by|near|beside|behind|next to) it\b", text, re.I) and self._last_object() is None:
+            _, item = self._last_furniture()
+            if item is not None:  # "go to the couch", "now the table in front of it": of the couch
+                text = re.sub(r"\b(of|to|by|near|beside|behind|next to) it\b", rf"\1 the {item.model}", text, flags=re.I)
         parsed = self.services.parser(self.world).parse(text)
         plan = parsed.plan
         unused = [w for w in plan.unused if w.isalpha() and len(w) > 2 and w.lower() not in POLITE_WORDS]
@@ -1533,6 +1548,9 @@ class DialogueManager:
             # "the remote is on the coffee table" while the robot searches for the remote: go there
             self.worker.stop(quiet=True)
             self._redirected = True
+        elif self.busy and not self._stepping and re.match(r"(?:no|nope|not|wrong|sorry|actually|wait|oops)\b",
+                                                           said.lower()):
+            self.worker.stop(quiet=True)  # "no no, the living room" while driving: there at once
         elif self.busy and not self._stepping:  # (an errand's next step starts as the last one ends)
             return self._turn(said, "command", "I'm still busy with the last task — say \"stop\" first.",
                               "none", "busy", start)
@@ -1566,7 +1584,8 @@ class DialogueManager:
             if len(homes) == 1:
                 room, text = homes[0], f"{text} in the {homes[0]}"
             elif homes and not force:
-                self.pending = {"kind": "room", "text": text, "original": said, "rooms": homes}
+                self.pending = {"kind": "room", "text": text, "original": said, "rooms": homes,
+                                "furniture": node.support or node.target}
                 word = " ".join([*node.descriptors, node.support or node.target]) if kinds else node.target
                 return self._turn(said, "command", f"Which room is the {word} in — "
                                   + _join([f"the {r}" for r in homes], "or") + "?", "clarify", "asked",
@@ -1717,6 +1736,10 @@ class DialogueManager:
             offered = p.get("rooms") or self.rooms  # the rooms the question named, in its order
             if room is None and (i := ordinal_choice(norm)) is not None and -len(offered) <= i < len(offered):
                 room = offered[i]  # "the first one", "the second"
+            if room is None and p.get("furniture"):  # "go to the table": "the round one", "you choose"
+                answer = self._furniture_answer(text, norm, p, start)
+                if answer is not None:
+                    return answer
             if room is None:
                 plan = self.services.parser(self.world).parse(text).plan
                 room = plan.room
@@ -1832,6 +1855,12 @@ class DialogueManager:
         """"sorry, I meant the bedroom", "wrong room — the bedroom": the last fetch or search
         again, for the thing it was about, in the room now named; None when the words are not
         such a correction or no thing was talked of."""
+        norm = NOT_BUT.sub(r"no \g<right>", norm)  # "not the bedroom, the living room"
+        if re.fullmatch(r"(?:(?:no|oh|sorry) )*(?:wrong room|not that room|wrong way|wrong place|not this room)", norm):
+            if self.busy:  # "wrong room" while driving: stop, and ask
+                self.worker.stop(quiet=True)
+            rooms = _join(["the " + r for r in self.rooms], "or")
+            return self._turn(text, "command", f"Sorry — which room then: {rooms}?", "clarify", "asked", start)
         m = re.match(r"^(?:(?:no|sorry|oh|actually|i meant|i mean|i said|wrong room|not that room|not there)\b ?)+"
                      r"(?:(?:try|check|look in|go to|its in|it is in|theyre in|they are in|in) )?(?:the |my )?"
                      r"(?P<room>[a-z ]+?)(?: then| please| instead)*$", norm)
@@ -1891,10 +1920,10 @@ class DialogueManager:
         return self._turn(text, "command", f"Which room, then — {_join(['the ' + r for r in others], 'or')}?",
                           "clarify", "asked", start, missing="room")
 
-    def _last_visited(self) -> dict | None:
-        """The piece of furniture the last fetch went to, as a which-question among the pieces of
-        its kind in its room (the one visited tried), when there are several; else None. A
-        detected piece (sensed perception) is the world's piece of that kind nearest its centre."""
+    def _last_furniture(self):
+        """(the last finished fetch's turn, the world's piece of furniture it went to) — a detected
+        piece (sensed perception) is the world's piece of that kind nearest its centre; (turn or
+        None, None) when there is none."""
         turn = next((t for t in reversed(self.history) if t.action == "fetch" and t.final), None)
         target = (turn.data.get("target_furniture") or {}) if turn is not None else {}
         furniture = self.world.scene(self.scene).furniture
@@ -1903,8 +1932,16 @@ class DialogueManager:
             kind = [f for f in furniture if f.word == furniture_category(str(target.get("name", "")))]
             near = sorted(kind, key=lambda f: math.dist((f.x, f.y), target["centre"][:2]))
             item = near[0] if near and math.dist((near[0].x, near[0].y), target["centre"][:2]) < 1.0 else None
+        return turn, item
+
+    def _last_visited(self) -> dict | None:
+        """The piece of furniture the last fetch went to, as a which-question among the pieces of
+        its kind in its room (the one visited tried), when there are several; else None. A
+        detected piece (sensed perception) is the world's piece of that kind nearest its centre."""
+        turn, item = self._last_furniture()
         if item is None:
             return None
+        furniture = self.world.scene(self.scene).furniture
         items = [f for f in furniture if f.word == item.word and f.room == item.room]
         if len(items) < 2:
             return None
@@ -1918,6 +1955,43 @@ class DialogueManager:
         or a move of its own ("bring me the mug", "go to the kitchen")."""
         plan = self.services.parser(self.world).parse(text).plan
         return bool(plan.object or plan.nodes or plan.room or unknown_room_named(text.lower().split(), self.world))
+
+    def _furniture_answer(self, text: str, norm: str, p: dict, start: float) -> Turn | None:
+        """An answer to "Which room is the table in …?" that names no room: "you choose" / "I
+        don't know" / "the nearest" (the nearest such piece in those rooms), "the round one" (the
+        kind), "the left one" (asked again — left of what is not known yet); None otherwise."""
+        word = p["furniture"]
+        words = re.sub(r"^(?:(?:um|uh|er|well|oh|hmm|ok|okay|so) )+", "", norm)
+        words = re.sub(r"(?: (?:please|then|is fine|will do|thanks|i guess))+$", "", words)
+        pieces = [f for f in self.world.scene(self.scene).furniture if f.word == word and f.room in p["rooms"]]
+        if not pieces:
+            return None
+        if re.fullmatch(r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|"
+                        r"any one|anyone|any of them|whichever|whichever one|whatever|you choose|you pick|your choice|"
+                        r"you decide|up to you|(?:it )?doesnt matter|(?:the )?(?:nearest|closest|near)(?: one)?)"
+                        r"(?: (?:one|of them|is fine|room))?", words):
+            here, _ = self.robot_xy()
+            piece = min(pieces, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
+            self.pending = None
+            turn = self._command(re.sub(rf"\bthe {re.escape(word)}\b", f"the {piece.model}", p["text"], count=1)
+                                 + f" in the {piece.room}", start, force=True, original=text)
+            if turn.action in ("fetch", "search"):
+                turn.reply = f"I'll take the nearest, the {piece.model} in the {piece.room}. {turn.reply}"
+                self.last_said = turn.reply
+            return turn
+        kind = re.fullmatch(r"(?:the |that |this )?(?P<kind>[a-z]+) (?:one|" + re.escape(word) + r")", words)
+        if kind is not None and kind["kind"] not in ("left", "right", "other", "first", "second", "third", "last"):
+            said = kind["kind"]
+            if any(said in f.model.split() for f in pieces):  # "the round one": the round tables
+                self.pending = None
+                return self._command(re.sub(rf"\bthe {re.escape(word)}\b", f"the {said} {word}", p["text"], count=1),
+                                     start, original=text)
+        if re.fullmatch(r"(?:the |that |this )?(?:(?:left|right)(?: hand)?(?: one| side)?|one (?:on|to) the (?:left|right)|"
+                        r"the one (?:on|to) the (?:left|right))", words):
+            rooms = _join(["the " + r for r in p["rooms"]], "or")
+            return self._turn(text, "answer", f"Left or right as seen from where? Tell me the room first — {rooms} — "
+                              f"or the kind, for example \"the {pieces[0].model}\".", "clarify", "asked", start)
+        return None
 
     def _choose_by_manner(self, norm: str, options: list[dict]):
         """An answer to a which-question that picks by how, not by what: "either" / "I don't

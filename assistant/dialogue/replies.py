@@ -4,6 +4,7 @@ and keep the object memory in step with what the robot saw."""
 
 from __future__ import annotations
 
+import math
 import re
 import time
 from dataclasses import dataclass
@@ -157,6 +158,11 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
     elif details.get("arrived"):  # a room with nothing to face ("go to the hallway")
         return Turn(text, "command", f"I'm here, in the {details['arrived']}.", "fetch", "success", data,
                     time.perf_counter() - start), pending
+    on_it = _things_on(summary, item, furniture)
+    if on_it:  # "check the coffee table": what lies there
+        data["on_it"] = on_it
+        return Turn(text, "command", f"I'm there, facing {where}. On it I can see {join_words([f'your {n}' for n in on_it])}.", "fetch",
+                    "success", data, time.perf_counter() - start), pending
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                 time.perf_counter() - start), pending
 
@@ -201,3 +207,17 @@ def it_them(obj: str) -> str:
     from assistant.generation import it_them as pronoun
 
     return pronoun(obj)
+
+
+def _things_on(summary: dict, item, furniture: dict) -> list[str]:
+    """The things the task saw lying on the piece of furniture it went to (the world's ``item``, or
+    the detector's ``furniture`` with its centre): by the piece's id, or within 0.9 m of its centre."""
+    centre = (item.x, item.y) if item is not None else tuple((furniture.get("centre") or [None, None])[:2])
+    ids = {i for i in ((item.id if item is not None else None), furniture.get("id")) if i is not None}
+    out = []
+    for name, place in sorted(summary.get("places", {}).items()):
+        x, y = place.get("x_m"), place.get("y_m")
+        if place.get("furniture") in ids or (x is not None and centre[0] is not None
+                                             and math.dist((x, y), centre) < 0.9):
+            out.append(name)
+    return out
