@@ -366,12 +366,17 @@ class DialogueManager:
                               "Yes? Tell me what to do — say \"help\" for examples.", start=start)
         if name == "bye":  # the conversation ends (the REPL leaves on this action)
             return self._turn(text, name, "Goodbye.", "leave", "answered", start)
-        if name == "come_here" and re.search(r"\b(started|start|beginning|began|starting|came from)\b", intent.text):
-            # "go back to where you started": the room it set out from
+        if name == "come_here" and (re.search(r"\b(started|start|beginning|began|starting|came from)\b", intent.text)
+                                    or (re.search(r"\bcome back\b", intent.text) and self.robot_xy()[1])):
+            # "go back to where you started", "come back" after a task: the room it set out from
             here = self.world.floorplan.room_at(self.world.start.x, self.world.start.y)
             room = getattr(here, "name", here)
             if room:
-                return self._command(f"go to the {room}", start, original=text)
+                turn = self._command(f"go to the {room}", start, original=text)
+                if turn.action == "fetch" and "started" not in intent.text:
+                    turn.reply = f"I'll go back to where I started, in the {room}. {turn.reply}"
+                    self.last_said = turn.reply
+                return turn
         if name in SOCIAL_REPLIES:
             return self._turn(text, name, SOCIAL_REPLIES[name], start=start)
         if name == "again":
@@ -1265,6 +1270,10 @@ class DialogueManager:
         self._redirected = False
         self.last_choice = None
         if not force and not self._stepping and STEP_BREAK.search(text):
+            here = self.world.floorplan.room_at(self.world.start.x, self.world.start.y)
+            if here is not None:  # "…, then come back": to the room it set out from
+                text = re.sub(r"(?<=then )(?:please )?(?:come|go) back(?: here| to me| to where you started| to the start)?"
+                              r"(?=$|[ ,.!])", f"go back to the {here.name}", text, flags=re.I)
             steps = split_steps(text, self._step_room)
             if len(steps) > 1:  # "go to the living room, then go to the bedroom": one step at a time
                 turn = self._command(steps[0], start, original=original or text)
@@ -1477,6 +1486,12 @@ class DialogueManager:
         text = self._substitute(text)
         if (rather := NOT_BUT.match(text)) is not None:  # "not the bedroom, the living room": the second
             text = rather.group("right")
+        look = re.fullmatch(r"(?:(?:please|now|then|and|can you|could you|will you) )*(?:check|check on|look at|have a look "
+                            r"at|take a look at|inspect|visit)(?: out)? (?P<place>(?:the|my) [a-z ]+?)(?: please| now)*",
+                            text.lower())
+        if look is not None and self._furniture_rooms(look["place"])[0] is not None \
+                and self._object_in(look["place"])[0] is None:
+            text = f"go to {look['place']}"  # "check the couch": go and look at it
         if re.search(r"\b(?:of|to|by|near|beside|behind|next to) it\b", text, re.I) and self._last_object() is None:
             _, item = self._last_furniture()
             if item is not None:  # "go to the couch", "now the table in front of it": of the couch

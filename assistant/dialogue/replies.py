@@ -161,8 +161,9 @@ def fetch_reply(ctx: ReplyContext, text: str, result, obj: str | None, start: fl
     on_it = _things_on(summary, item, furniture)
     if on_it:  # "check the coffee table": what lies there
         data["on_it"] = on_it
-        return Turn(text, "command", f"I'm there, facing {where}. On it I can see {join_words([f'your {n}' for n in on_it])}.", "fetch",
-                    "success", data, time.perf_counter() - start), pending
+        seen_there = join_words([f"your {n}" for n in on_it])
+        return Turn(text, "command", f"I'm there, facing {where}. On it I can see {seen_there}.", "fetch", "success",
+                    data, time.perf_counter() - start), pending
     return Turn(text, "command", f"I'm there, facing {where}.", "fetch", "success", data,
                 time.perf_counter() - start), pending
 

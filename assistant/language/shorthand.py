@@ -29,6 +29,8 @@ SHORTHAND = {
     "taht": "that", "thier": "their", "pleae": "please", "plase": "please", "pleas": "please",
     "wich": "which", "whcih": "which", "blu": "blue", "gren": "green", "whit": "white",
     "hav": "have", "hve": "have", "ahve": "have", "sen": "seen", "yu": "you", "yor": "your",
+    "chek": "check", "chk": "check", "chekc": "check", "coffe": "coffee", "cofee": "coffee", "tabel": "table",
+    "tabl": "table", "bedrom": "bedroom", "couh": "couch", "cuch": "couch",
     # places typed short ("the rnd table in the innr hall", "thru the livng rm")
     "rnd": "round", "innr": "inner", "livng": "living", "lvng": "living", "bdrm": "bedroom", "offce": "office",
     "thats": "that's",
