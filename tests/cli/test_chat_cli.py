@@ -185,14 +185,14 @@ def test_a_chat_read_from_a_pipe_takes_each_command_after_the_last(tmp_path):
 
 
 def test_a_question_read_from_a_pipe_is_answered_after_the_task_before_it(tmp_path):
-    """"my hearing aid is on the bed" then "where's my hearing aid?": the question waits for the
-    robot to have looked (it was answered at once, "I haven't seen your hearing aid"), and the
-    answer says what it was told and that it looked."""
+    """"the hearing aid is on the bed" (a fetch) then "where's my hearing aid?": the question waits
+    for the robot to have looked (it was answered at once, "I haven't seen your hearing aid"), and
+    the answer says what it was told and that it looked."""
     import subprocess
 
     env = dict(os.environ, ASSISTANT_DATA=str(tmp_path / "data"), PYTHONWARNINGS="ignore")
     run = subprocess.run([sys.executable, "-m", "assistant", "chat", "--world", "apartment", "--perception",
-                          "oracle", "--search", "oracle"], input="my hearing aid is on the bed\n"
+                          "oracle", "--search", "oracle"], input="the hearing aid is on the bed\n"
                           "where's my hearing aid?\nbye\n", capture_output=True, text=True, cwd=str(ROOT), env=env,
                           timeout=240)
     out = run.stdout
