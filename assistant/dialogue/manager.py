@@ -81,6 +81,10 @@ WHEN_SAID = (r"\s+(?:this (?:morning|afternoon|evening)|last night|tonight|yeste
              r"minutes ago|before (?:lunch|dinner|breakfast|bed))$")
 #: intents about the task under way, not to wait for its end (``about_the_task``)
 DURING_TASK = frozenset({"stop", "cancel", "emergency", "status", "start_over", "command"})
+#: an answer to "which one?" that leaves the choice to the robot ("you choose", "I don't know", "the nearest")
+_ANY_ONE = (r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|any one|anyone|"
+            r"any of them|whichever|whichever one|whatever|you choose|you pick|your choice|you decide|up to you|"
+            r"(?:it )?doesnt matter|(?:the )?(?:nearest|closest|near)(?: one)?)")
 #: a place said and then the right one: "not the bedroom, the living room", "no, not the couch but the bed"
 NOT_BUT = re.compile(r"^(?:(?:no|nope|sorry|oh)[ ,]+)*not (?:to )?(?:the |my |that )?[a-z]+(?: [a-z]+)?[ ,]+"
                      r"(?:but |i mean |i meant |rather )?(?P<right>(?:the|my|to|into|go|in|on)\b.*)$")
@@ -392,7 +396,8 @@ class DialogueManager:
             return self._turn(text, name, "Nothing right now: I'm waiting for you to ask me something."
                               if doing is None else f"I'm {doing[0]} ({doing[1]:.0f} s so far). Say \"stop\" to "
                               "stop me.", start=start)
-        if re.fullmatch(r"(?:(?:and|so|ok|okay|now) )*(?:is there anything|is anything|anything|whats|what is|what else is|"
+        if re.fullmatch(r"(?:(?:and|so|ok|okay|now) )*(?:is there anything(?: else)?|is anything|anything(?: else)?|whats|"
+                        r"what is|what else is|"
                         r"what have you seen|what can you see|do you see anything) on (?:it|there|that|top)(?: now)?",
                         intent.text) and (item := self._last_furniture()[1]) is not None:
             # "check the table by the bed" … "is there anything on it?": that piece
@@ -1981,10 +1986,7 @@ class DialogueManager:
         pieces = [f for f in self.world.scene(self.scene).furniture if f.word == word and f.room in p["rooms"]]
         if not pieces:
             return None
-        if re.fullmatch(r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|"
-                        r"any one|anyone|any of them|whichever|whichever one|whatever|you choose|you pick|your choice|"
-                        r"you decide|up to you|(?:it )?doesnt matter|(?:the )?(?:nearest|closest|near)(?: one)?)"
-                        r"(?: (?:one|of them|is fine|room))?", words):
+        if re.fullmatch(rf"{_ANY_ONE}(?: {_ANY_ONE})*(?: (?:one|of them|is fine|room))?", words):
             here, _ = self.robot_xy()
             piece = min(pieces, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
             self.pending = None
@@ -2022,10 +2024,7 @@ class DialogueManager:
         if any(f is None for f in pieces):
             return None
         here, _ = self.robot_xy()
-        if re.fullmatch(r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|"
-                        r"any one|anyone|any of them|whichever|whichever one|you choose|you pick|your choice|you decide|"
-                        r"(?:it )?doesnt matter|both|try both|all of them|(?:the )?(?:nearest|closest|near)(?: one)?)"
-                        r"(?: (?:one|of them|is fine))?", words):
+        if re.fullmatch(rf"(?:{_ANY_ONE}|both|try both|all of them)(?: {_ANY_ONE})*(?: (?:one|of them|is fine))?", words):
             metres = [floor_distance_m(self._walls_map, here, (f.x, f.y))[0] for f in pieces]
             k = min(range(len(pieces)), key=metres.__getitem__)
             return k, "I'll try the nearest."
