@@ -410,20 +410,11 @@ class DialogueManager:
         if name == "want":  # "I need my glasses": a fetch of the thing, wherever it is
             thing = re.search(WANTED, intent.text).group("thing")
             return self._command(f"bring me {thing}", start, original=text)
-        if name in ("where", "where_dynamic"):
-            return self._where(text, intent, start)
-        if name == "where_check":
-            return self._where_check(text, intent, start)
-        if name == "told":
-            return self._told(text, intent, start)
-        if name == "on_furniture":
-            return self._on_furniture(text, intent, start)
-        if name == "how_far":
-            return self._how_far(text, intent, start)
-        if name == "near_furniture":
-            return self._near_furniture(text, intent, start)
-        if name == "what_known":
-            return self._what_known(text, intent, start)
+        answers = {"where": self._where, "where_dynamic": self._where, "where_check": self._where_check,
+                   "told": self._told, "on_furniture": self._on_furniture, "how_far": self._how_far,
+                   "near_furniture": self._near_furniture, "what_known": self._what_known}
+        if name in answers:  # questions and statements answered from the map and the memory
+            return answers[name](text, intent, start)
         if name == "teach":
             return self._teach(text, start)
         if name == "dont":  # "don't go to the bedroom": stop what it is doing, start nothing

@@ -3,43 +3,19 @@ room question that name no room, "not X, Y", corrections while it drives, "it" f
 furniture just visited, "check the couch", "… then come back", and what it saw at a piece."""
 
 import sys
-import time
 from pathlib import Path
 
 import pytest
 
-from assistant.dialogue import DialogueManager, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory
 from assistant.dialogue.intents import classify
 
 sys.path.insert(0, str(Path(__file__).parent))
-from standins import fetch_result  # noqa: E402
-
-
-class Fetcher:
-    """Ends at ``furniture``; with ``hold`` it keeps reporting until the manager stops it."""
-
-    def __init__(self, furniture="couch_1", hold=False):
-        self.furniture, self.hold, self.texts = furniture, hold, []
-
-    def __call__(self, text, world, scene, on_event):
-        self.texts.append(text)
-        while self.hold and len(self.texts) == 1:
-            time.sleep(0.01)
-            on_event("move_to", {"goal": None})
-        return fetch_result(True, self.furniture)
-
-
-@pytest.fixture(scope="module")
-def services():
-    from assistant.world import load_world
-
-    s = Services(perception="oracle")
-    s.warm_up(load_world("apartment"), background=False)
-    return s
+from standins import RecordingFetcher  # noqa: E402
 
 
 def make(services, tmp_path, fetcher=None):
-    fetcher = fetcher or Fetcher()
+    fetcher = fetcher or RecordingFetcher()
     m = DialogueManager("apartment", services=services.using(fetcher=fetcher), memory=ObjectMemory(tmp_path / "m.json"))
     m.fetcher = fetcher
     return m
@@ -71,7 +47,7 @@ def test_not_one_place_but_another(services, tmp_path):
 
 
 def test_a_correction_while_driving_goes_there_at_once(services, tmp_path):
-    m = make(services, tmp_path, Fetcher(hold=True))
+    m = make(services, tmp_path, RecordingFetcher(hold=True))
     m.handle("go to the bedroom")
     assert m.busy
     turn = m.handle("no no the living room")
@@ -82,7 +58,7 @@ def test_a_correction_while_driving_goes_there_at_once(services, tmp_path):
 
 
 def test_wrong_room_stops_and_asks(services, tmp_path):
-    m = make(services, tmp_path, Fetcher(hold=True))
+    m = make(services, tmp_path, RecordingFetcher(hold=True))
     m.handle("go to the bedroom")
     turn = m.handle("wrong room")
     assert turn.reply.startswith("Sorry — which room then:") and turn.action == "clarify"
@@ -101,7 +77,7 @@ def test_it_is_the_piece_just_visited(services, tmp_path):
 
 
 def test_anything_on_it_after_a_visit(services, tmp_path):
-    m = make(services, tmp_path, Fetcher(furniture="coffeetable_1"))
+    m = make(services, tmp_path, RecordingFetcher(furniture="coffeetable_1"))
     m.handle("go to the coffee table in the living room")
     m.wait(10)
     m.memory.remember("apartment", "glasses case", "living room", "coffeetable_1", "table", "on the coffee table")

@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 
-from assistant.dialogue import DialogueManager, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory
 from assistant.dialogue.distances import floor_distance_m, how_far_question, spoken_distance
 from assistant.dialogue.intents import classify
 
 sys.path.insert(0, str(Path(__file__).parent))
-from standins import fetch_result  # noqa: E402
+from standins import RecordingFetcher  # noqa: E402
 
 
 @pytest.mark.parametrize("said, places", [
@@ -49,27 +49,9 @@ def test_distances_are_said_as_people_say_them():
         "less than a metre", "about a metre", "about 4 metres", "about 11 metres"]
 
 
-class Fetcher:
-    def __init__(self):
-        self.texts = []
-
-    def __call__(self, text, world, scene, on_event):
-        self.texts.append(text)
-        return fetch_result(True, "couch_1")
-
-
-@pytest.fixture(scope="module")
-def services():
-    from assistant.world import load_world
-
-    s = Services(perception="oracle")
-    s.warm_up(load_world("apartment"), background=False)
-    return s
-
-
 @pytest.fixture
 def manager(services, tmp_path):
-    fetcher = Fetcher()
+    fetcher = RecordingFetcher()
     m = DialogueManager("apartment", services=services.using(fetcher=fetcher),
                         memory=ObjectMemory(tmp_path / "memory.json"))
     m.fetcher = fetcher

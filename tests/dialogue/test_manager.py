@@ -34,15 +34,6 @@ class StandInFetcher:
         return fetch_result(bool(self.seen), self.furniture)
 
 
-@pytest.fixture(scope="module")
-def services():
-    from assistant.world import load_world
-
-    s = Services(perception="oracle")
-    s.warm_up(load_world("apartment"), background=False)
-    return s
-
-
 @contextlib.contextmanager
 def searching_the_map(m):
     """The manager answers "where is my X?" from the simulator's map (oracle search) meanwhile."""

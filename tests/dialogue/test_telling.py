@@ -7,34 +7,16 @@ from pathlib import Path
 
 import pytest
 
-from assistant.dialogue import DialogueManager, ObjectMemory, Services
+from assistant.dialogue import DialogueManager, ObjectMemory
 from assistant.dialogue.intents import classify, told_places
 from assistant.dialogue.nearby import furniture_by, near_question
 
 sys.path.insert(0, str(Path(__file__).parent))
-from standins import fetch_result  # noqa: E402
-
-
-class Fetcher:
-    def __init__(self):
-        self.texts = []
-
-    def __call__(self, text, world, scene, on_event):
-        self.texts.append(text)
-        return fetch_result(True, "couch_1")
-
-
-@pytest.fixture(scope="module")
-def services():
-    from assistant.world import load_world
-
-    s = Services(perception="oracle")
-    s.warm_up(load_world("apartment"), background=False)
-    return s
+from standins import RecordingFetcher  # noqa: E402
 
 
 def make(services, tmp_path, world="apartment"):
-    fetcher = Fetcher()
+    fetcher = RecordingFetcher()
     m = DialogueManager(world, services=services.using(fetcher=fetcher), memory=ObjectMemory(tmp_path / "m.json"))
     m.fetcher = fetcher
     return m
