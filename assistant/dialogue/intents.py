@@ -169,7 +169,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                     r"(?:recogni[sz]e|see|find|look for|search for|detect|spot|identify|know)\b",
                     r"\bwhat (?:can|do) you (?:recogni[sz]e|detect|identify)\b",
                     r"\bwhat (?:can|could) you (?:look for|search for)\b",
-                    r"\b(?:can|could|do) you (?:recogni[sz]e|detect|identify|tell) (?:what )?(?P<thing>(?:a|an|my|the|our|his|"
+                    r"\b(?:can|could|do) you (?:recogni[sz]e|detect|identify|tell what) (?P<thing>(?:a|an|my|the|our|his|"
                     r"her|some) [a-z]+(?: [a-z]+)?)(?: look like| looks like)?$",
                     r"\bdo you know what (?P<thing2>(?:a|an|my|the|our|his|her) [a-z]+(?: [a-z]+)?) (?:looks?|look) like\b")),
     # what stands by a piece of furniture: "what's next to the bed?" (dialogue.nearby)
@@ -230,6 +230,7 @@ RULES: list[tuple[str, tuple[str, ...]]] = [
                 r"^" + ADDRESS + r"(?:please )?(?:(?:can|could|would|will) you (?:please )?)?(?:pick (?:it|them|that|this) up|"
                 r"lift (?:it|them)|carry (?:it|them)|hold (?:it|them)|hand (?:it|them) (?:to me|over))\b")),
     ("out_of_scope", (r"\b(whats|what is) the (time|weather|date)\b", r"\bwhat time is it\b",
+                      r"\btell (?:me )?the (?:time|date|weather)\b",
                       r"\b(call|phone|ring|text|email|message|video call) (my|the|someone|somebody|a|an|him|her|them)\b",
                       r"\b(make|cook|get|bring|fix|fetch|grab|pour) (me |us )?(a |some )?(cup of |mug of |glass of )?(tea|"
                       r"coffee|dinner|lunch|breakfast|food|a sandwich|something to eat|something to drink|a drink|water|"

@@ -81,6 +81,10 @@ WHEN_SAID = (r"\s+(?:this (?:morning|afternoon|evening)|last night|tonight|yeste
              r"minutes ago|before (?:lunch|dinner|breakfast|bed))$")
 #: intents about the task under way, not to wait for its end (``about_the_task``)
 DURING_TASK = frozenset({"stop", "cancel", "emergency", "status", "start_over", "command"})
+#: who a told place may be of that is no thing to keep track of ("my son is in the living room")
+PEOPLE_AND_PETS = frozenset({"son", "daughter", "wife", "husband", "mum", "mom", "mother", "dad", "father", "grandson",
+                             "granddaughter", "grandma", "grandpa", "friend", "carer", "nurse", "neighbour", "neighbor",
+                             "brother", "sister", "partner", "cat", "dog", "kitten", "puppy", "bird"})
 #: an answer to "which one?" that leaves the choice to the robot ("you choose", "I don't know", "the nearest")
 _ANY_ONE = (r"(?:(?:i )?(?:dont|do not) (?:know|mind|care)|dunno|not sure|no idea|either|either one|any|any one|anyone|"
             r"any of them|whichever|whichever one|whatever|you choose|you pick|your choice|you decide|up to you|"
@@ -1059,11 +1063,14 @@ class DialogueManager:
                 rf"(?:on|in|at) (?:the|my|our) {re.escape(said_room)}", place):
             place = f"in the {said_room}"  # "I moved it to the bedroom": in it, not on it
         noun = re.sub(r"^(my|the|our|his|her) ", "", thing)
+        if noun in PEOPLE_AND_PETS:  # "my son is in the living room": no thing
+            return "I can only keep track of things, not people or pets — but I can tell you where your things are."
         obj = self._last_object() if noun in ("it", "them") else self._object_in(thing)[0]
         if obj is None and noun in ("it", "them"):
             return "Which of your things do you mean? Say, for example, \"I've put my keys on the table in the hallway\"."
         if obj is None:
             return f"I don't know what {article(noun)} {noun} is, so I can't keep track of it."
+        place = re.sub(r"\bmy\b", "your", place)  # "in my bag": said back as "in your bag"
         room = self._room_in(place)
         missing = unknown_room_named(place.split(), self.world) if room is None else None
         if missing is not None:

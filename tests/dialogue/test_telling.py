@@ -215,3 +215,11 @@ def test_a_told_room_not_known_keeps_the_place_without_it(services, tmp_path):
     turn = m.handle("I don't know")
     assert turn.reply == "That's fine — I'll just remember that your book is on the coffee table." and m.pending is None
     assert m.memory.recall("apartment", "book").phrase == "on the coffee table"
+
+
+def test_people_and_pets_are_no_things_and_my_is_said_back_as_your(services, tmp_path):
+    m = make(services, tmp_path)
+    assert m.handle("my son is in the living room").reply.startswith("I can only keep track of things")
+    assert m.memory.recall("apartment", "son") is None
+    assert m.handle("my keys are in my bag").reply == "OK — I'll remember that your keys are in your bag."
+    assert classify("can you tell the time").name == "out_of_scope"
