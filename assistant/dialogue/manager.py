@@ -43,7 +43,7 @@ from assistant.dialogue.services import Services, furniture_phrase
 from assistant.dialogue.turns import HELP_TEXT, NUMBER_WORDS, SOCIAL_REPLIES, Turn
 from assistant.dialogue.steps import STEP_BREAK, split_steps, step_place
 from assistant.dialogue.turns import join_words as _join
-from assistant.dialogue.replies import it_them, related_seen
+from assistant.dialogue.replies import it_them, near, related_seen
 from assistant.generation import is_are, some
 from assistant.dialogue.worker import TaskWorker
 from assistant.grounding.motion import describe_motion, is_motion_plan
@@ -116,6 +116,20 @@ class DistanceGoal:
     note: str = ""
     command: str | None = None
     object: str | None = None
+
+
+def _lies_on(seen, piece) -> bool:
+    """Whether a remembered thing lies on ``piece`` (a world furniture item): seen on it by its
+    id, or — the robot's own furniture has the detector's ids — seen in its room within 0.9 m
+    of its centre (``replies.near``)."""
+    return seen.furniture == piece.id or (seen.room == piece.room and near(seen, piece, {}, 0.9))
+
+
+def _bare_answer(norm: str) -> str:
+    """An answer to one of the robot's questions without the hesitation before it and the
+    courtesy after it: "um whatever, you choose please" → "whatever you choose"."""
+    words = re.sub(r"^(?:(?:um|uh|er|well|oh|hmm|ok|okay|so) )+", "", norm)
+    return re.sub(r"(?: (?:please|then|is fine|will do|thanks|i guess))+$", "", words)
 
 
 def _capital(phrase: str) -> str:
@@ -974,8 +988,7 @@ class DialogueManager:
         if seen.furniture in items:
             return items[seen.furniture].model in said
         if seen.x_m is not None:  # the robot's own furniture (a detector's id): the piece the thing lay on
-            under = [f for f in items.values() if f.room == seen.room and f.word == seen.furniture_word
-                     and math.dist((f.x, f.y), (seen.x_m, seen.y_m)) < 0.9]
+            under = [f for f in items.values() if f.word == seen.furniture_word and _lies_on(seen, f)]
             if under:
                 return min(under, key=lambda f: math.dist((f.x, f.y), (seen.x_m, seen.y_m))).model in said
         models = self._said_models(seen.phrase or "")
@@ -1129,9 +1142,8 @@ class DialogueManager:
             pieces = [f for f in pieces if f.id in by]
             said = f"{said} {m.group('rel')} the {landmark}"
         if landmark or len(pieces) < sum(f.word == word for f in furniture):  # not every table
-            entries = [s for s in entries if any(s.furniture == f.id or (  # the robot's own furniture: where it is
-                s.x_m is not None and s.room == f.room and math.dist((s.x_m, s.y_m), (f.x, f.y)) < 0.9)
-                for f in pieces) or (s.furniture is None and s.x_m is None and said in (s.phrase or ""))]
+            entries = [s for s in entries if any(_lies_on(s, f) for f in pieces)
+                       or (s.furniture is None and s.x_m is None and said in (s.phrase or ""))]
         where = f" in the {room}" if room else ""
         if not entries:
             return self._turn(text, intent.name, f"I don't know of anything on the {said}{where}: I only know what "
@@ -1145,7 +1157,7 @@ class DialogueManager:
         """"what objects can you recognise?", "can you recognise my slippers?": the things this
         home's map has, honestly — others can be looked for by name, but it may not know them."""
         known = sorted(known_object_names(self.world))
-        listed = _join([plural(k) if k in ("keys", "glasses") else k for k in known])
+        listed = _join(known)
         m = re.search(r"(?:recogni[sz]e|detect|identify|tell|know what) (?:what )?(?:a |an |my |the |our |his |her |some )"
                       r"(?P<thing>[a-z]+(?: [a-z]+)?)", intent.text)
         if m is None:
@@ -1182,26 +1194,25 @@ class DialogueManager:
                               f"{plural(found[0].word)} here, in {rooms} — which one? Say, for example, \"what's "
                               f"{rel} the {found[0].model} in the {found[0].room}?\"", "clarify", "asked", start)
         reference = found[0]
-        near = furniture_by(self.world, self.scene, reference.id, RELATION_SIDES[rel])
+        by = furniture_by(self.world, self.scene, reference.id, RELATION_SIDES[rel])
         name = f"the {said}"
-        if not near:
+        if not by:
             return self._turn(text, intent.name, f"Nothing stands {rel} {name} in the {reference.room} that I know of.",
                               start=start, room=reference.room)
         pieces = [f"the {f.model}{'' if RELATION_SIDES[rel] else ' (' + SIDE_WORDS.get(side, 'there') + ')'}"
-                  for f, side in near]
+                  for f, side in by]
         reply = (f"{_capital(rel)} {name} in the {reference.room} {'is' if len(pieces) == 1 else 'are'} "
                  f"{_join(pieces)}.")
         things = []
         for s in sorted(self.memory.sightings(self.world.name), key=lambda s: -s.time_s):
-            on = next((f for f, _ in near if s.furniture == f.id or (
-                s.x_m is not None and s.room == f.room and math.dist((s.x_m, s.y_m), (f.x, f.y)) < 0.9)), None)
+            on = next((f for f, _ in by if _lies_on(s, f)), None)
             if on is not None:
                 how = "you told me" if s.told else "seen"
                 things.append(f"your {s.object} on the {on.model} ({how} {self.memory.age(s)})")
         if things:
-            reply += f" On {'it' if len(near) == 1 else 'them'} I know of {_join(things[:SEEN_LIST_MAX])}."
+            reply += f" On {'it' if len(by) == 1 else 'them'} I know of {_join(things[:SEEN_LIST_MAX])}."
         return self._turn(text, intent.name, reply, start=start, room=reference.room,
-                          furniture=[f.id for f, _ in near])
+                          furniture=[f.id for f, _ in by])
 
     def _seen_at(self, obj: str, seen) -> str:
         """Where a remembered thing is, said with where the memory came from: "I saw your mug 3
@@ -1390,8 +1401,7 @@ class DialogueManager:
         if found:
             if room is not None:
                 found = [f for f in found if f.room == room] or found
-            here, _ = self.robot_xy()
-            nearest = min(found, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
+            nearest = self._nearest(found)
             name = f"the {words if len(found) == 1 else nearest.model}"
             there = f"in the {room}" if room is not None and all(f.room == room for f in found) else "here"
             note = "" if len(found) == 1 else (f" (That's the nearest of the {NUMBER_WORDS.get(len(found), len(found))}"
@@ -1979,14 +1989,12 @@ class DialogueManager:
         don't know" / "the nearest" (the nearest such piece in those rooms), "the round one" (the
         kind), "the left one" (asked again — left of what is not known yet); None otherwise."""
         word = p["furniture"]
-        words = re.sub(r"^(?:(?:um|uh|er|well|oh|hmm|ok|okay|so) )+", "", norm)
-        words = re.sub(r"(?: (?:please|then|is fine|will do|thanks|i guess))+$", "", words)
+        words = _bare_answer(norm)
         pieces = [f for f in self.world.scene(self.scene).furniture if f.word == word and f.room in p["rooms"]]
         if not pieces:
             return None
         if re.fullmatch(rf"{_ANY_ONE}(?: {_ANY_ONE})*(?: (?:one|of them|is fine|room))?", words):
-            here, _ = self.robot_xy()
-            piece = min(pieces, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
+            piece = self._nearest(pieces)
             self.pending = None
             turn = self._command(re.sub(rf"\bthe {re.escape(word)}\b", f"the {piece.model}", p["text"], count=1)
                                  + f" in the {piece.room}", start, force=True, original=text)
@@ -2008,24 +2016,25 @@ class DialogueManager:
                               f"or the kind, for example \"the {pieces[0].model}\".", "clarify", "asked", start)
         return None
 
+    def _nearest(self, pieces: list):
+        """The piece of furniture the robot would reach first along the floor from where it is."""
+        here, _ = self.robot_xy()
+        return min(pieces, key=lambda f: floor_distance_m(self._walls_map, here, (f.x, f.y))[0])
+
     def _choose_by_manner(self, norm: str, options: list[dict]):
         """An answer to a which-question that picks by how, not by what: "either" / "I don't
         know" / "the nearest" (the nearest along the floor), "the bigger one" (by the model's
         footprint), "the left one" (by its bearing from the robot) — (index, what to say first)
         — or "none" for "neither", or None when the answer is none of these."""
-        words = re.sub(r"^(?:(?:um|uh|er|well|oh|hmm|ok|okay|so) )+", "", norm)
-        words = re.sub(r"(?: (?:please|then|is fine|will do|thanks|i guess))+$", "", words)
+        words = _bare_answer(norm)
         if re.fullmatch(r"(?:neither|none|no one|not any)(?: of them| one| of those)?", words):
             return "none"
         items = {f.id: f for f in self.world.scene(self.scene).furniture}
         pieces = [items.get(o.get("id")) for o in options]
         if any(f is None for f in pieces):
             return None
-        here, _ = self.robot_xy()
         if re.fullmatch(rf"(?:{_ANY_ONE}|both|try both|all of them)(?: {_ANY_ONE})*(?: (?:one|of them|is fine))?", words):
-            metres = [floor_distance_m(self._walls_map, here, (f.x, f.y))[0] for f in pieces]
-            k = min(range(len(pieces)), key=metres.__getitem__)
-            return k, "I'll try the nearest."
+            return pieces.index(self._nearest(pieces)), "I'll try the nearest."
         size = re.fullmatch(r"(?:the )?(?P<size>big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|"
                             r"tiny|long|longer|longest)(?: one| table| ones?)?", words)
         if size is not None:
@@ -2038,6 +2047,7 @@ class DialogueManager:
         side = re.fullmatch(r"(?:the )?(?:(?P<a>left|right)(?: hand)?(?: one| side| table)?|one (?:on|to) the "
                             r"(?P<b>left|right))|the one (?:on|to) the (?P<c>left|right)(?: side)?", words)
         if side is not None:
+            here, _ = self.robot_xy()
             mid = (sum(f.x for f in pieces) / len(pieces), sum(f.y for f in pieces) / len(pieces))
             heading = math.atan2(mid[1] - here[1], mid[0] - here[0])  # facing the pieces asked about
             bearing = [math.remainder(math.atan2(f.y - here[1], f.x - here[0]) - heading, math.tau) for f in pieces]
